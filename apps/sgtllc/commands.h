@@ -1,0 +1,12 @@
+// The sgtllc subcommands. Each registers itself on the app and runs from its callback.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace sgtllc::cli {
+
+void addPairCommand(CLI::App& app);
+void addRunCommand(CLI::App& app);
+void addConfigCommand(CLI::App& app);
+
+}  // namespace sgtllc::cli

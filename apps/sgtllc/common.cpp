@@ -1,0 +1,141 @@
+#include "common.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "sgtllc/io/config_yaml.h"
+#include "sgtllc/io/kitti.h"
+#include "sgtllc/io/pcd.h"
+
+namespace fs = std::filesystem;
+
+namespace sgtllc::cli {
+
+Config loadConfigOption(const std::string& path, int threads) {
+  Config config = path.empty() ? Config{} : io::loadConfig(path);
+  if (threads > 0) config.threads = threads;
+  config.validate();
+  return config;
+}
+
+LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field) {
+  const std::string ext = fs::path(path).extension().string();
+  if (ext == ".pcd") {
+    if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");
+    return io::readPcd(path, label_field);
+  }
+  if (ext != ".bin") throw Error(path + ": unknown scan format '" + ext + "' (expected a KITTI .bin or a .pcd)");
+  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path);
+}
+
+void checkWritable(const std::string& path, bool force) {
+  if (fs::exists(path) && !force) {
+    throw Error(path + ": file exists; choose another name or pass --force to overwrite it");
+  }
+}
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw Error("cannot write " + path + ": cannot create " + tmp);
+    out << text;
+    out.flush();
+    if (!out) throw Error("cannot write " + path + " (disk full?)");
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw Error("cannot write " + path + ": " + ec.message());
+  }
+}
+
+void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes) {
+  if (stats.nonfinite_points > 0) {
+    std::cerr << "warning: " << name << ": dropped " << stats.nonfinite_points
+              << " points with NaN or Inf coordinates\n";
+  }
+  if (stats.unknown_label_points > 0) {
+    std::cerr << "warning: " << name << ": ignored " << stats.unknown_label_points
+              << " points whose label id is not in the configured label set (labels.preset)\n";
+  }
+  if (num_nodes == 0) {
+    std::cerr << "warning: " << name << ": no graph nodes (no clusters of the 7 stable classes); it cannot be a loop\n";
+  }
+}
+
+Json matrixJson(const Eigen::Matrix4d& T) {
+  Json rows = Json::array();
+  for (int r = 0; r < 4; ++r) {
+    Json row = Json::array();
+    for (int c = 0; c < 4; ++c) row.push_back(T(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", digits, v);
+  return buf;
+}
+
+std::string matrixText(const Eigen::Matrix4d& T, const std::string& indent) {
+  std::string s;
+  for (int r = 0; r < 4; ++r) {
+    s += indent + "[";
+    for (int c = 0; c < 4; ++c) {
+      const std::string v = fixed(T(r, c), 6);
+      s += std::string(c ? 12 - v.size() : 10 - v.size(), ' ') + v;
+    }
+    s += " ]\n";
+  }
+  return s;
+}
+
+Json timingJson(const StageTimes& t, double load_ms) {
+  return {{"load", load_ms},
+          {"extraction", t.extraction_ms},
+          {"description", t.description_ms},
+          {"retrieval", t.retrieval_ms},
+          {"verification", t.verification_ms},
+          {"total", load_ms + t.total_ms()}};
+}
+
+Progress::Progress(std::string what, size_t total)
+    : what_(std::move(what)), total_(total), enabled_(::isatty(STDERR_FILENO) != 0) {}
+
+void Progress::update(size_t done, const std::string& extra) {
+  if (!enabled_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (drawn_ && done < total_ && now - last_ < std::chrono::milliseconds(100)) return;
+  last_ = now;
+  constexpr int kWidth = 30;
+  const double share = total_ ? static_cast<double>(done) / total_ : 1.0;
+  const int filled = static_cast<int>(share * kWidth);
+  std::fprintf(stderr, "\r\033[K%s [%s%s] %zu/%zu %3d%% %s", what_.c_str(), std::string(filled, '#').c_str(),
+               std::string(kWidth - filled, '.').c_str(), done, total_, static_cast<int>(share * 100.0),
+               extra.c_str());
+  std::fflush(stderr);
+  drawn_ = true;
+}
+
+void Progress::clear() {
+  if (enabled_ && drawn_) {
+    std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    drawn_ = false;
+  }
+}
+
+void Progress::finish() {
+  if (enabled_ && drawn_) std::fprintf(stderr, "\n");
+  drawn_ = false;
+}
+
+}  // namespace sgtllc::cli

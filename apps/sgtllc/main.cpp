@@ -1,0 +1,27 @@
+// sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC) from the command line.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "common.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "sgtllc 0.1.0");
+  sgtllc::cli::addPairCommand(app);
+  sgtllc::cli::addRunCommand(app);
+  sgtllc::cli::addConfigCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints the message (or the help); every command-line mistake exits with 2.
+    return app.exit(e) == 0 ? 0 : sgtllc::cli::kExitUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "sgtllc: error: " << e.what() << "\n";
+    return sgtllc::cli::kExitFailure;
+  }
+  return 0;
+}

@@ -1,0 +1,30 @@
+/// @file association.h
+/// @brief Node association between two frames by counting similar sub-vectors (spec §6, paper Algorithm 1).
+#pragma once
+
+#include <vector>
+
+#include "sgtllc/config.h"
+#include "sgtllc/frame.h"
+
+namespace sgtllc {
+
+/// One associated node pair: query node index, match node index and their similarity S.
+struct NodeMatch {
+  int query = 0;
+  int match = 0;
+  double similarity = 0.0;
+};
+
+/// Similarity S[i][j] of query node i and match node j (spec §6): over the slots valid in the query, the share
+/// (or, with NodeScore::kCount, the number) whose sub-vectors are valid in both with cos > σ_1 and |Δa_j| below
+/// max_delta_aj. Returns 0 if node i has no valid slot.
+double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match, const AssociationConfig& config,
+                      SubVectorOrder order);
+
+/// LA: for every non-isolated query node, its most similar same-class match node (ties to the lowest index),
+/// kept iff S ≥ σ_2. Several query nodes may share a match node, as in Algorithm 1. In query-node order.
+std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
+                                      const AssociationConfig& config, SubVectorOrder order);
+
+}  // namespace sgtllc

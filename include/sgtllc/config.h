@@ -1,0 +1,148 @@
+/// @file config.h
+/// @brief The one configuration aggregate. Every field has a default, units and the paper symbol or spec section.
+///
+/// Defaults are the spec's [CHOICE] values for KITTI (spec §1–§8). YAML keys mirror the field names one to one
+/// (`cluster.building.min_size`, `verification.sigma_4`, …); `sgtllc config` prints them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+
+#include "sgtllc/types.h"
+
+namespace sgtllc {
+
+/// How raw per-point ids map to the stable classes (spec §1, §8).
+enum class LabelPreset {
+  kSemanticKittiRaw,       ///< SemanticKITTI raw ids (50 building … 81 traffic-sign); low 16 bits of the .label word
+  kSemanticKittiLearning,  ///< SemanticKITTI learning ("train") ids 13..19
+  kMulRan,                 ///< MulRan: train id = label + 1
+  kMcd,                    ///< MCD: the authors' 29-entry map
+  kCustom,                 ///< LabelConfig::custom_map only
+};
+
+struct LabelConfig {
+  LabelPreset preset = LabelPreset::kSemanticKittiRaw;  ///< id convention of the input labels (spec §1, §8)
+  /// Raw id → stable class index (0..6). Used when preset is kCustom; ids not listed are dropped.
+  std::map<uint32_t, int> custom_map;
+};
+
+/// Where a node's centre comes from (spec §2 and §11).
+enum class CentreSource {
+  kPoints,  ///< mean of the cluster's original points: invariant to the axis-aligned voxel grid (spec §11) [default]
+  kVoxels,  ///< mean of the cluster's voxel centroids, as the authors' code (pcl::compute3DCentroid on voxels)
+};
+
+/// Per-class clustering parameters (spec §2 table).
+struct ClassClusterConfig {
+  double voxel = 0.0;   ///< voxel leaf (m); 0 = no downsampling
+  double radius = 1.0;  ///< FEC radius r (m)
+  int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points
+};
+
+struct ClusterConfig {
+  /// Indexed by class (building, fence, vegetation, trunk, terrain, pole, traffic-sign).
+  std::array<ClassClusterConfig, kNumClasses> classes = {{
+      {0.4, 1.0, 200},  // building
+      {0.4, 1.0, 20},   // fence
+      {0.4, 1.0, 150},  // vegetation
+      {0.0, 1.0, 20},   // trunk
+      {0.4, 1.0, 150},  // terrain
+      {0.0, 1.0, 20},   // pole
+      {0.0, 1.0, 20},   // traffic-sign
+  }};
+  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (spec §2)
+  double duplicate_radius = 1.0;   ///< skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one
+  CentreSource centre = CentreSource::kPoints;  ///< node centre source (spec §11 [CHOICE])
+};
+
+struct GraphConfig {
+  double sigma_d = 30.0;           ///< σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (spec §3)
+  bool allow_k_equals_i = false;   ///< allow the two-step path i→j→i, as the authors' code (spec §3 [CHOICE])
+};
+
+/// Order of the three sub-vector entries of a local-descriptor slot (spec §4).
+enum class SubVectorOrder {
+  kPaper,  ///< (a_i, a_j, a_k), vertex-rooted [default]
+  kCode,   ///< (a_i, a_k, −a_j), the authors' code
+};
+
+/// Global descriptor variants (spec §5).
+enum class GlobalMode {
+  kG1,  ///< paper: 98-D fuzzy pooling of max a_k (floored at 0)
+  kG2,  ///< code: 343-D, max 1 − cos θ_k
+  kG3,  ///< hybrid: 98-D fuzzy pooling of max 1 − cos θ_k [default]
+};
+
+struct DescriptorConfig {
+  SubVectorOrder order = SubVectorOrder::kPaper;  ///< sub-vector entry order (spec §4 [CHOICE])
+  GlobalMode global_mode = GlobalMode::kG3;       ///< global descriptor Des^G (spec §5 [CHOICE])
+};
+
+/// Nearest-neighbour search over global descriptors.
+enum class RetrievalMethod {
+  kBruteForce,  ///< exact linear scan (spec §5 [CHOICE]) [default]
+  kKdTree,      ///< exact kd-tree search (nanoflann), same results as brute force
+};
+
+struct RetrievalConfig {
+  int num_candidates = 15;   ///< K: candidates retrieved per query (spec §5)
+  int exclude_recent = 50;   ///< G: query q searches only frames with index ≤ q − G (spec §5 [CHOICE])
+  int warmup_frames = 0;     ///< no query before this many frames are in the database (authors' code: 150)
+  RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
+};
+
+/// How the node similarity S[i][j] is formed (spec §6).
+enum class NodeScore {
+  kRatio,  ///< matched slots / valid query slots, as the authors' code [default]
+  kCount,  ///< raw count of matched slots, as the paper's Algorithm 1
+};
+
+struct AssociationConfig {
+  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (spec §6)
+  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (spec §6)
+  double sigma_2 = 0.3;          ///< σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6)
+  NodeScore score = NodeScore::kRatio;  ///< node similarity form (spec §6)
+};
+
+/// Formula of the loop score score_t (spec §7.3).
+enum class ScoreFormula {
+  kPaper,   ///< n_in / |LA| [default]
+  kLegacy,  ///< (n_in − 1) / |LA|, as the authors' code
+};
+
+struct VerificationConfig {
+  double sigma_3 = 0.35;          ///< σ_3: skip a candidate if score_c = |LA| / M < σ_3 (spec §7.1)
+  int min_associations = 7;       ///< ... or if |LA| is below this (spec §7.1)
+  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (spec §7.2)
+  int ransac_sample_size = 7;     ///< node pairs drawn per hypothesis (spec §7.2)
+  bool sample_with_replacement = true;  ///< draw with replacement, as the authors' code (spec §7.2)
+  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (spec §7.2)
+  int min_inliers = 5;            ///< a hypothesis is accepted only with at least this many inliers (spec §7.2)
+  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (spec §7.2)
+  /// Adaptive RANSAC: stop once an all-inlier sample of the best hypothesis has been drawn with this probability;
+  /// 1 = always run ransac_iterations, as the authors' code. [deviation: 500 fixed iterations cost ~0.5 ms per
+  /// candidate that passes the gates; at the inlier ratios of true loops (60–80 %, spec §11) ~50 suffice]
+  double ransac_confidence = 0.999;
+  ScoreFormula score_formula = ScoreFormula::kPaper;  ///< score_t formula (spec §7.3 [CHOICE])
+  double sigma_4 = 0.3;           ///< σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (spec §7.4, §8)
+  uint32_t seed = 42;             ///< RANSAC random seed; every candidate starts from it (spec §7.2 [CHOICE])
+};
+
+/// Everything the pipeline reads. Modules receive only their own sub-struct.
+struct Config {
+  LabelConfig labels;
+  ClusterConfig cluster;
+  GraphConfig graph;
+  DescriptorConfig descriptor;
+  RetrievalConfig retrieval;
+  AssociationConfig association;
+  VerificationConfig verification;
+  int threads = 1;  ///< worker threads for candidate verification; results do not depend on it
+
+  /// Throws sgtllc::Error naming the first field whose value is out of range.
+  void validate() const;
+};
+
+}  // namespace sgtllc

@@ -1,0 +1,61 @@
+/// @file database.h
+/// @brief Frame store and global-descriptor retrieval (spec §5, §10).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "sgtllc/config.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc {
+
+/// One retrieved frame: its index and squared L2 distance between global descriptors.
+struct RetrievedFrame {
+  int frame = 0;
+  float distance2 = 0.0f;
+};
+
+/// What the database keeps of a frame: its nodes and its global descriptor. Local descriptors are a pure function
+/// of the nodes (describeFrame) and are rebuilt for the ≤ K candidates of a query, which costs microseconds and
+/// keeps the store near 1 KB per frame instead of ~20 KB (spec §10).
+struct StoredFrame {
+  std::vector<Node> nodes;
+  std::vector<float> global;
+};
+
+/// Frames in insertion order, numbered 0, 1, 2, …, with exact K-nearest-neighbour search over global descriptors.
+class FrameDatabase {
+ public:
+  explicit FrameDatabase(RetrievalMethod method = RetrievalMethod::kBruteForce);
+  ~FrameDatabase();
+  FrameDatabase(FrameDatabase&&) noexcept;
+  FrameDatabase& operator=(FrameDatabase&&) noexcept;
+
+  /// Appends a frame; returns its index. Throws std::invalid_argument if the global descriptor's length differs
+  /// from the first frame's.
+  int add(StoredFrame frame);
+
+  int size() const;
+  /// Nodes of frame @p index.
+  const std::vector<Node>& nodes(int index) const;
+  /// Global descriptor of frame @p index (globalDimension() floats).
+  const float* global(int index) const;
+  int globalDimension() const;
+
+  /// The @p k frames among 0..last (inclusive) nearest to @p global, nearest first; ties go to the lower index.
+  /// Returns fewer if fewer frames are eligible, none if last < 0.
+  std::vector<RetrievedFrame> query(const std::vector<float>& global, int last, int k) const;
+
+  /// Bytes held for frame @p index: its nodes, its global descriptor and per-frame bookkeeping.
+  size_t frameBytes(int index) const;
+  /// Bytes held for all frames.
+  size_t totalBytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sgtllc

@@ -1,0 +1,90 @@
+/// @file detector.h
+/// @brief The online loop detector (one frame at a time) and the pairwise comparison of two frames.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sgtllc/config.h"
+#include "sgtllc/database.h"
+#include "sgtllc/frame.h"
+#include "sgtllc/node_extraction.h"
+#include "sgtllc/verification.h"
+
+namespace sgtllc {
+
+/// Wall-clock time per stage of one frame or pair (milliseconds, steady clock).
+struct StageTimes {
+  double extraction_ms = 0.0;    ///< class split, voxel downsampling, clustering, centres (0 when nodes are given)
+  double description_ms = 0.0;   ///< graph, local and global descriptors
+  double retrieval_ms = 0.0;     ///< K-nearest-neighbour search over global descriptors
+  double verification_ms = 0.0;  ///< candidate descriptors, association, RANSAC and pose
+  double total_ms() const { return extraction_ms + description_ms + retrieval_ms + verification_ms; }
+};
+
+/// One retrieved candidate frame and its verification.
+struct Candidate {
+  int frame = -1;           ///< database index of the candidate
+  float distance2 = 0.0f;   ///< squared L2 distance of the global descriptors
+  MatchResult match;        ///< association, scores and pose (query → candidate)
+};
+
+/// What the detector found for one frame.
+struct FrameResult {
+  int frame = -1;                     ///< index given to this frame (0, 1, 2, … in processing order)
+  int num_nodes = 0;                  ///< nodes of this frame
+  ExtractionStats extraction;         ///< point bookkeeping (zeros when nodes were given)
+  std::vector<Candidate> candidates;  ///< the retrieved candidates in ascending frame index, each verified
+  int best = -1;                      ///< index into candidates of the highest score_t (ties: higher frame), or −1
+  bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
+  StageTimes timing;
+
+  /// The loop closure, or nullptr.
+  const Candidate* loop() const { return is_loop ? &candidates[best] : nullptr; }
+};
+
+/// Online SGT-LLC: every processed frame is described, queried against the frames at least
+/// `retrieval.exclude_recent` older, verified and then stored. Not thread-safe; uses `config.threads` internally.
+class LoopDetector {
+ public:
+  /// Throws sgtllc::Error if the configuration is invalid.
+  explicit LoopDetector(const Config& config = {});
+
+  /// Processes a labelled scan (points in the sensor frame). Throws std::invalid_argument if the points and
+  /// labels differ in length.
+  FrameResult process(const LabeledCloud& cloud);
+  /// Processes a frame given as ready-made nodes (centre + stable class), e.g. from an instance segmentation.
+  FrameResult process(std::vector<Node> nodes);
+
+  int numFrames() const { return database_.size(); }
+  const FrameDatabase& database() const { return database_; }
+  const Config& config() const { return config_; }
+  const NodeExtractor& extractor() const { return extractor_; }
+
+ private:
+  FrameResult processNodes(std::vector<Node> nodes, FrameResult result);
+
+  Config config_;
+  NodeExtractor extractor_;
+  FrameDatabase database_;
+};
+
+/// Result of comparing two frames directly.
+struct PairResult {
+  MatchResult match;             ///< query → match
+  bool is_loop = false;          ///< isLoop(match, σ_4)
+  std::vector<Node> query_nodes;  ///< the nodes that NodeMatch::query indexes
+  std::vector<Node> match_nodes;  ///< the nodes that NodeMatch::match indexes
+  ExtractionStats extraction_query;
+  ExtractionStats extraction_match;
+  StageTimes timing;             ///< both frames' extraction and description; verification of the pair
+};
+
+/// Compares two labelled scans: is @p query a revisit of @p match, and where is it in @p match's frame?
+PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config = {});
+/// The same for ready-made node sets.
+PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config = {});
+
+}  // namespace sgtllc

@@ -1,0 +1,26 @@
+/// @file frame.h
+/// @brief A frame's semantic graph with its local and global descriptors: everything matching needs.
+#pragma once
+
+#include <vector>
+
+#include "sgtllc/config.h"
+#include "sgtllc/descriptor.h"
+#include "sgtllc/global_descriptor.h"
+#include "sgtllc/graph.h"
+
+namespace sgtllc {
+
+struct DescribedFrame {
+  SemanticGraph graph;                ///< nodes, adjacency and second-order topology
+  std::vector<LocalDescriptor> local; ///< one per node
+  std::vector<float> global;          ///< Des^G
+
+  int numNodes() const { return graph.size(); }
+};
+
+/// Graph (spec §3), local descriptors (§4) and global descriptor (§5) of a node set. A pure function of the
+/// nodes and the configuration, so a database can store nodes alone and rebuild this on demand.
+DescribedFrame describeFrame(std::vector<Node> nodes, const GraphConfig& graph, const DescriptorConfig& descriptor);
+
+}  // namespace sgtllc

@@ -1,0 +1,46 @@
+/// @file graph.h
+/// @brief Semantic graph: σ_d adjacency and second-order topology T_i[m][n] (spec §3).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sgtllc/config.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc {
+
+/// Number of class-pair slots α = 7·m + n per node (spec §4).
+inline constexpr int kNumSlots = kNumClasses * kNumClasses;
+
+/// The longest two-step path i→j→k for one class pair, or j = k = −1 if there is none.
+struct TwoStepPath {
+  int j = -1;
+  int k = -1;
+  bool exists() const { return j >= 0; }
+};
+
+/// Nodes with their adjacency and, per node and class pair, the longest two-step path.
+struct SemanticGraph {
+  std::vector<Node> nodes;
+  Eigen::MatrixXd distance;          ///< N×N centre distances (m)
+  std::vector<uint8_t> adjacency;    ///< N×N row-major, 1 iff p ≠ q and distance < σ_d
+  std::vector<uint8_t> isolated;     ///< 1 iff the node has no neighbour (no descriptor content, spec §3)
+  std::vector<std::array<TwoStepPath, kNumSlots>> paths;  ///< T_i[7m + n]
+
+  int size() const { return static_cast<int>(nodes.size()); }
+  bool adjacent(int p, int q) const { return adjacency[static_cast<size_t>(p) * nodes.size() + q] != 0; }
+  /// Undirected edges (p < q), in row-major order.
+  std::vector<std::pair<int, int>> edges() const;
+};
+
+/// Builds the graph of @p nodes (spec §3): A[p][q] = 1 iff ‖c_p − c_q‖ < σ_d; for every node i and class pair
+/// (m, n) the path i→j→k with l_j = m, l_k = n maximising d_ij + d_jk, ties to the lowest j then the lowest k,
+/// with k ≠ i unless allow_k_equals_i. O(N² · 7).
+SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config);
+
+}  // namespace sgtllc

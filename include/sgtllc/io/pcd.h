@@ -1,0 +1,37 @@
+/// @file pcd.h
+/// @brief PCD input (ascii, binary and binary_compressed) with a per-point label field, and PCD node export.
+///
+/// Accepted: PCL's PCD v0.7 header (v0.6 files without VIEWPOINT, and a missing COUNT line meaning COUNT 1, are
+/// accepted too; VERSION is informational). WIDTH × HEIGHT must equal POINTS; organised clouds are read row by
+/// row. DATA ascii (one point per line, blank lines ignored), binary (little-endian records, point by point) and
+/// binary_compressed (uint32 compressed size, uint32 uncompressed size, then LZF data holding each field's values
+/// for all points, field after field).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sgtllc/types.h"
+
+namespace sgtllc::io {
+
+/// Reads fields x, y, z and the label field @p label_field of a PCD file.
+///
+/// - x, y, z must be F4 or F8 with COUNT 1 (F8 is narrowed to float); NaN coordinates are kept.
+/// - The label field must have COUNT 1 and may be U1/U2/U4/U8, I1/I2/I4/I8 or F4/F8. Float labels are rounded to
+///   the nearest integer; negative labels wrap to uint32 (−1 → 0xFFFFFFFF, which is no stable class). Labels
+///   outside [−2³¹, 2³²) or non-finite are an error.
+/// - Every other field (any type, any COUNT, e.g. intensity, rgb, normals, "_" padding) is skipped.
+///
+/// Throws sgtllc::Error naming the file (and the line for header and ascii problems) if the file cannot be read, a
+/// header line is malformed (`PATH:LINE: malformed header line: ...`), DATA is not one of the three kinds
+/// (`unsupported DATA type 'X'`), a field is missing (`no field 'label' (fields: x y z rgb)`), the data is truncated
+/// (`truncated binary data: N points need B bytes, found F`) or the LZF block is corrupt.
+LabeledCloud readPcd(const std::string& path, const std::string& label_field = "label");
+
+/// Writes nodes as an ascii PCD v0.7 with fields x y z (F4) and label (U4, the stable class index 0..6), readable by
+/// PCL as pcl::PointXYZL. Coordinates are written as the shortest text that reads back to the same float.
+/// Throws sgtllc::Error naming the file if a label is outside 0..6 or the file cannot be written.
+void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes);
+
+}  // namespace sgtllc::io

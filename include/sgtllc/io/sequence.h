@@ -1,0 +1,41 @@
+/// @file sequence.h
+/// @brief A SemanticKITTI-layout sequence directory: velodyne/NNNNNN.bin with labels/NNNNNN.label.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sgtllc/types.h"
+
+namespace sgtllc::io {
+
+/// The scans of one sequence and their label files. Only file names are collected at construction; scans are read
+/// on demand by load().
+class SequenceDir {
+ public:
+  /// Lists the regular files `dir/velodyne/*.bin` in ascending file-name order (byte-wise, so zero-padded KITTI names
+  /// sort by frame number) and pairs each with `dir/labels/NAME.label`. Other files are ignored.
+  /// Throws sgtllc::Error if `velodyne/` is missing or has no .bin file, or if any scan has no label file; that
+  /// message names the first missing label file and says how many of the scans have none.
+  explicit SequenceDir(const std::string& dir);
+
+  /// Number of scans.
+  size_t size() const { return bins_.size(); }
+  /// The directory as given to the constructor.
+  const std::string& dir() const { return dir_; }
+  /// Path of scan i (`dir/velodyne/NAME.bin`); throws std::out_of_range if i >= size().
+  const std::string& binPath(size_t i) const { return bins_.at(i); }
+  /// Path of the labels of scan i (`dir/labels/NAME.label`); throws std::out_of_range if i >= size().
+  const std::string& labelPath(size_t i) const { return labels_.at(i); }
+  /// File stem of frame i ("000052").
+  std::string frameName(size_t i) const;
+  /// Reads frame i (scan + labels, counts checked; see readLabeledScan).
+  LabeledCloud load(size_t i) const;
+
+ private:
+  std::string dir_;
+  std::vector<std::string> bins_;
+  std::vector<std::string> labels_;
+};
+
+}  // namespace sgtllc::io

@@ -1,0 +1,31 @@
+/// @file labels.h
+/// @brief Mapping of raw per-point semantic ids to the seven stable classes (spec §1, §8).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sgtllc/config.h"
+
+namespace sgtllc {
+
+/// Class assigned to ids that are dropped (not one of the stable classes).
+inline constexpr int8_t kDropped = -1;
+
+/// Lookup table from a raw id to a stable class index (0..6) or kDropped. Only the low 16 bits of an id are used,
+/// so SemanticKITTI instance ids in the high half are ignored for every preset.
+class LabelMap {
+ public:
+  explicit LabelMap(const LabelConfig& config = {});
+
+  /// Stable class of a raw id, or kDropped.
+  int8_t classOf(uint32_t raw) const { return table_[raw & 0xFFFFu]; }
+  /// True if the id belongs to the preset's label space (a dropped class such as road is known; 12345 is not).
+  bool isKnown(uint32_t raw) const { return known_[raw & 0xFFFFu] != 0; }
+
+ private:
+  std::vector<int8_t> table_;
+  std::vector<uint8_t> known_;
+};
+
+}  // namespace sgtllc

@@ -1,0 +1,45 @@
+/// @file node_extraction.h
+/// @brief From a labelled scan to semantic-graph nodes: class split, voxel downsampling, FEC, centres and
+///        same-class duplicate suppression (spec §1–§2).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "sgtllc/config.h"
+#include "sgtllc/labels.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc {
+
+/// What happened to a scan's points on their way to nodes.
+struct ExtractionStats {
+  size_t input_points = 0;        ///< points given
+  size_t nonfinite_points = 0;    ///< points with a NaN or Inf coordinate, dropped
+  size_t unknown_label_points = 0;  ///< points whose id is not in the preset's label space, dropped
+  std::array<size_t, kNumClasses> class_points{};  ///< kept points per stable class
+  std::array<int, kNumClasses> clusters{};          ///< clusters of at least min_size per class
+  int duplicates_suppressed = 0;  ///< clusters skipped because an accepted same-class centre was too close
+};
+
+/// Nodes of one scan, building first … traffic-sign last, each class in FEC order (spec §2 node order).
+struct NodeExtractionResult {
+  std::vector<Node> nodes;
+  ExtractionStats stats;
+};
+
+/// Turns labelled scans into nodes. Immutable after construction; safe to share between threads.
+class NodeExtractor {
+ public:
+  NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels);
+
+  /// Throws std::invalid_argument if points and labels differ in length.
+  NodeExtractionResult extract(const LabeledCloud& cloud) const;
+
+ private:
+  ClusterConfig config_;
+  LabelMap label_map_;
+};
+
+}  // namespace sgtllc

@@ -1,0 +1,41 @@
+/// @file ransac.h
+/// @brief Rigid alignment of point correspondences: SVD (Kabsch) and seeded RANSAC (spec §7.2, §7.5).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace sgtllc {
+
+/// The rigid transform T (4×4) minimising Σ‖T·source_k − target_k‖², with det(R) = +1 (no reflection).
+/// Needs at least one pair; source and target must have the same length.
+Eigen::Matrix4d fitRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target);
+
+struct RansacParams {
+  int iterations = 500;           ///< hypotheses
+  int sample_size = 7;            ///< pairs drawn per hypothesis
+  bool with_replacement = true;   ///< draw with replacement (authors' code) or distinct pairs
+  double inlier_threshold = 0.4;  ///< ‖T·s − t‖ < this (m)
+  int min_inliers = 5;            ///< a hypothesis needs at least this many inliers ...
+  double min_inlier_fraction = 0.01;  ///< ... and this share of all pairs
+  /// Stop once a sample of only inliers of the best hypothesis has been drawn with this probability (adaptive
+  /// RANSAC); 1 = always run every iteration, as the authors' code.
+  double confidence = 0.999;
+  uint32_t seed = 42;             ///< std::mt19937 seed
+};
+
+struct RansacResult {
+  bool accepted = false;                                   ///< a hypothesis met min_inliers and min_inlier_fraction
+  Eigen::Matrix4d T_target_source = Eigen::Matrix4d::Identity();  ///< the best hypothesis
+  std::vector<int> inliers;                                ///< indices of its inlier pairs, ascending
+};
+
+/// RANSAC over correspondences (source_k, target_k) (spec §7.2): keeps the hypothesis with strictly the most
+/// inliers (so the first one found wins a tie); stops after `iterations`, once every pair is an inlier, or when
+/// the adaptive bound for `confidence` is reached. Deterministic for a given seed on every platform (no std::uniform_int_distribution).
+RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
+                         const RansacParams& params);
+
+}  // namespace sgtllc

@@ -1,0 +1,46 @@
+/// @file verification.h
+/// @brief Verifying one candidate frame: association, score_c gate, RANSAC, score_t and the SVD pose (spec §6–§7).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sgtllc/association.h"
+#include "sgtllc/config.h"
+#include "sgtllc/frame.h"
+#include "sgtllc/ransac.h"
+
+namespace sgtllc {
+
+/// Why a candidate got a zero score.
+enum class Rejection {
+  kNone,              ///< passed the gates and RANSAC accepted a hypothesis
+  kFewAssociations,   ///< score_c < σ_3 or |LA| < min_associations (spec §7.1)
+  kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (spec §7.2)
+};
+
+/// Outcome of comparing a query frame with one candidate ("match") frame.
+struct MatchResult {
+  std::vector<NodeMatch> associations;  ///< LA, in query-node order
+  std::vector<int> inliers;             ///< indices into associations of the RANSAC inliers
+  double score_c = 0.0;                 ///< |LA| / M, M = all query nodes, isolated ones included (spec §7.1)
+  double score_t = 0.0;                 ///< loop score; 0 unless rejection == kNone (spec §7.3)
+  Rejection rejection = Rejection::kFewAssociations;
+  /// Maps query-frame points into the match frame: p_match = T_match_query · p_query. Kabsch on all inliers
+  /// (spec §7.5); the identity unless rejection == kNone.
+  Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();
+};
+
+/// RANSAC parameters of the verification config.
+RansacParams ransacParams(const VerificationConfig& config);
+
+/// Associates nodes, applies the score_c gate, runs RANSAC and fits the pose on its inliers.
+MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config);
+
+/// The loop decision for one candidate score: score_t > σ_4 (spec §7.4).
+inline bool isLoop(const MatchResult& m, const VerificationConfig& config) {
+  return m.rejection == Rejection::kNone && m.score_t > config.sigma_4;
+}
+
+}  // namespace sgtllc

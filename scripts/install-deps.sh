@@ -1,0 +1,18 @@
+#!/bin/sh
+# Installs the Debian 12 packages sgtllc builds with, if any is missing. Needs root or sudo only when installing.
+set -eu
+PACKAGES="cmake ninja-build g++ libeigen3-dev libnanoflann-dev libyaml-cpp-dev liblzf-dev libcli11-dev \
+nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev"
+
+missing=""
+for p in $PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+
+echo "Installing Debian packages:$missing"
+if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+# shellcheck disable=SC2086
+$SUDO apt-get install -y -q --no-install-recommends $missing

@@ -1,0 +1,48 @@
+#include "sgtllc/association.h"
+
+#include <cmath>
+
+namespace sgtllc {
+
+double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match, const AssociationConfig& config,
+                      SubVectorOrder order) {
+  const int enable = query.numValid();
+  if (enable == 0) return 0.0;
+  const int vj = vjEntry(order);
+  const float sigma_1 = static_cast<float>(config.sigma_1);
+  const float max_delta = static_cast<float>(config.max_delta_aj);
+  int matches = 0;
+  // Both slots must hold a triangle (spec §6 [CHOICE]); the code also matched empty candidate slots via NaN.
+  for (uint64_t both = query.valid & match.valid; both != 0; both &= both - 1) {
+    const int a = __builtin_ctzll(both);
+    const Eigen::Vector3f& u = query.slots[a];
+    const Eigen::Vector3f& v = match.slots[a];
+    if (std::abs(u[vj] - v[vj]) >= max_delta) continue;
+    // cos(u, v) > σ_1 without a division; a zero-length sub-vector never matches.
+    if (u.dot(v) > sigma_1 * u.norm() * v.norm()) ++matches;
+  }
+  return config.score == NodeScore::kRatio ? static_cast<double>(matches) / enable : matches;
+}
+
+std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
+                                      const AssociationConfig& config, SubVectorOrder order) {
+  std::vector<NodeMatch> out;
+  for (int i = 0; i < query.numNodes(); ++i) {
+    if (query.graph.isolated[i]) continue;
+    const int label = query.graph.nodes[i].label;
+    int best = -1;
+    double best_score = 0.0;
+    for (int j = 0; j < match.numNodes(); ++j) {
+      if (match.graph.nodes[j].label != label) continue;
+      const double s = nodeSimilarity(query.local[i], match.local[j], config, order);
+      if (s > best_score) {  // strict, starting from 0: ties keep the lowest j (spec §6)
+        best_score = s;
+        best = j;
+      }
+    }
+    if (best >= 0 && best_score >= config.sigma_2) out.push_back(NodeMatch{i, best, best_score});
+  }
+  return out;
+}
+
+}  // namespace sgtllc

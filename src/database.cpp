@@ -1,0 +1,87 @@
+#include "sgtllc/database.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "kdtree_index.h"
+
+namespace sgtllc {
+
+struct FrameDatabase::Impl {
+  RetrievalMethod method;
+  std::vector<std::vector<Node>> nodes;
+  std::vector<float> globals;  ///< row-major, one row per frame
+  int dim = -1;
+  std::unique_ptr<internal::KdTreeIndex> kdtree;  ///< built lazily for kKdTree
+};
+
+FrameDatabase::FrameDatabase(RetrievalMethod method) : impl_(std::make_unique<Impl>()) { impl_->method = method; }
+FrameDatabase::~FrameDatabase() = default;
+FrameDatabase::FrameDatabase(FrameDatabase&&) noexcept = default;
+FrameDatabase& FrameDatabase::operator=(FrameDatabase&&) noexcept = default;
+
+int FrameDatabase::size() const { return static_cast<int>(impl_->nodes.size()); }
+const std::vector<Node>& FrameDatabase::nodes(int index) const { return impl_->nodes.at(index); }
+const float* FrameDatabase::global(int index) const {
+  if (index < 0 || index >= size()) throw std::out_of_range("FrameDatabase::global: no such frame");
+  return impl_->globals.data() + static_cast<size_t>(index) * impl_->dim;
+}
+int FrameDatabase::globalDimension() const { return impl_->dim; }
+
+int FrameDatabase::add(StoredFrame frame) {
+  const int dim = static_cast<int>(frame.global.size());
+  if (impl_->dim < 0) impl_->dim = dim;
+  if (dim != impl_->dim) throw std::invalid_argument("FrameDatabase::add: global descriptor length changed");
+  impl_->globals.insert(impl_->globals.end(), frame.global.begin(), frame.global.end());
+  impl_->nodes.push_back(std::move(frame.nodes));
+  return size() - 1;
+}
+
+std::vector<RetrievedFrame> FrameDatabase::query(const std::vector<float>& global, int last, int k) const {
+  std::vector<RetrievedFrame> out;
+  last = std::min(last, size() - 1);
+  if (last < 0 || k <= 0) return out;
+  if (static_cast<int>(global.size()) != impl_->dim) {
+    throw std::invalid_argument("FrameDatabase::query: global descriptor length differs from the stored ones");
+  }
+  std::vector<std::pair<int, float>> hits;
+  // The tree only grows; a query over an older prefix than it holds falls back to the exact scan.
+  if (impl_->method == RetrievalMethod::kKdTree && (!impl_->kdtree || impl_->kdtree->size() <= last + 1)) {
+    if (!impl_->kdtree) impl_->kdtree = std::make_unique<internal::KdTreeIndex>(&impl_->globals, impl_->dim);
+    impl_->kdtree->extendTo(last);
+    impl_->kdtree->knn(global.data(), k, &hits);
+  } else {
+    hits.reserve(static_cast<size_t>(last) + 1);
+    for (int f = 0; f <= last; ++f) {
+      const float* row = impl_->globals.data() + static_cast<size_t>(f) * impl_->dim;
+      float d2 = 0.0f;
+      for (int d = 0; d < impl_->dim; ++d) {
+        const float diff = row[d] - global[d];
+        d2 += diff * diff;
+      }
+      hits.emplace_back(f, d2);
+    }
+    const auto closer = [](const auto& a, const auto& b) {
+      return a.second < b.second || (a.second == b.second && a.first < b.first);
+    };
+    const size_t keep = std::min(hits.size(), static_cast<size_t>(k));
+    std::partial_sort(hits.begin(), hits.begin() + keep, hits.end(), closer);
+    hits.resize(keep);
+  }
+  for (const auto& [f, d2] : hits) out.push_back(RetrievedFrame{f, d2});
+  return out;
+}
+
+size_t FrameDatabase::frameBytes(int index) const {
+  return sizeof(std::vector<Node>) + impl_->nodes.at(index).capacity() * sizeof(Node) +
+         static_cast<size_t>(impl_->dim) * sizeof(float);
+}
+
+size_t FrameDatabase::totalBytes() const {
+  size_t bytes = 0;
+  for (int f = 0; f < size(); ++f) bytes += frameBytes(f);
+  return bytes;
+}
+
+}  // namespace sgtllc

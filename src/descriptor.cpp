@@ -1,0 +1,44 @@
+#include "sgtllc/descriptor.h"
+
+#include <bitset>
+
+namespace sgtllc {
+
+int LocalDescriptor::numValid() const { return static_cast<int>(std::bitset<64>(valid).count()); }
+
+std::array<float, 3 * kNumSlots> LocalDescriptor::flat() const {
+  std::array<float, 3 * kNumSlots> out{};
+  for (int a = 0; a < kNumSlots; ++a) {
+    for (int e = 0; e < 3; ++e) out[3 * a + e] = slots[a][e];
+  }
+  return out;
+}
+
+Eigen::Vector3d triangleTerms(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& pk) {
+  return {(pj - pi).dot(pk - pi), (pi - pj).dot(pk - pj), (pi - pk).dot(pj - pk)};
+}
+
+Eigen::Vector3d slotTerms(const Eigen::Vector3f& slot, SubVectorOrder order) {
+  const Eigen::Vector3d s = slot.cast<double>();
+  if (order == SubVectorOrder::kPaper) return s;
+  return {s[0], -s[2], s[1]};  // code order (a_i, a_k, −a_j)
+}
+
+std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph, const DescriptorConfig& config) {
+  std::vector<LocalDescriptor> out(graph.size());
+  for (int i = 0; i < graph.size(); ++i) {
+    LocalDescriptor& des = out[i];
+    for (int a = 0; a < kNumSlots; ++a) {
+      des.slots[a].setZero();
+      const TwoStepPath& path = graph.paths[i][a];
+      if (!path.exists()) continue;
+      const Eigen::Vector3d t =
+          triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
+      des.slots[a] = (config.order == SubVectorOrder::kPaper ? t : Eigen::Vector3d(t[0], t[2], -t[1])).cast<float>();
+      des.valid |= uint64_t{1} << a;
+    }
+  }
+  return out;
+}
+
+}  // namespace sgtllc

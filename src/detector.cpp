@@ -1,0 +1,106 @@
+#include "sgtllc/detector.h"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+#include "sgtllc/parallel.h"
+
+namespace sgtllc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+LoopDetector::LoopDetector(const Config& config)
+    : config_(config), extractor_(config.cluster, config.labels), database_(config.retrieval.method) {
+  config_.validate();
+}
+
+FrameResult LoopDetector::process(const LabeledCloud& cloud) {
+  FrameResult result;
+  const auto start = Clock::now();
+  NodeExtractionResult extracted = extractor_.extract(cloud);
+  result.timing.extraction_ms = msSince(start);
+  result.extraction = extracted.stats;
+  return processNodes(std::move(extracted.nodes), std::move(result));
+}
+
+FrameResult LoopDetector::process(std::vector<Node> nodes) { return processNodes(std::move(nodes), FrameResult{}); }
+
+FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult result) {
+  result.frame = database_.size();
+  auto start = Clock::now();
+  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor);
+  result.num_nodes = query.numNodes();
+  result.timing.description_ms = msSince(start);
+
+  // Query q sees frames 0 … q − G only (spec §5 [CHOICE]), and none before the warm-up.
+  start = Clock::now();
+  const RetrievalConfig& rc = config_.retrieval;
+  std::vector<RetrievedFrame> retrieved;
+  if (result.frame >= rc.warmup_frames) {
+    retrieved = database_.query(query.global, result.frame - rc.exclude_recent, rc.num_candidates);
+  }
+  result.timing.retrieval_ms = msSince(start);
+
+  // Candidates are verified in ascending frame index (spec §5); each writes only its own slot.
+  start = Clock::now();
+  std::sort(retrieved.begin(), retrieved.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
+  result.candidates.resize(retrieved.size());
+  parallelFor(static_cast<int>(retrieved.size()), config_.threads, [&](int c) {
+    Candidate& cand = result.candidates[c];
+    cand.frame = retrieved[c].frame;
+    cand.distance2 = retrieved[c].distance2;
+    const DescribedFrame candidate = describeFrame(database_.nodes(cand.frame), config_.graph, config_.descriptor);
+    cand.match = matchFrames(query, candidate, config_);
+  });
+  // Highest score_t wins; a tie goes to the later (higher-index) candidate, as the authors' `>=` (spec §7.4).
+  for (int c = 0; c < static_cast<int>(result.candidates.size()); ++c) {
+    const MatchResult& m = result.candidates[c].match;
+    if (m.rejection != Rejection::kNone) continue;
+    if (result.best < 0 || m.score_t >= result.candidates[result.best].match.score_t) result.best = c;
+  }
+  result.is_loop = result.best >= 0 && isLoop(result.candidates[result.best].match, config_.verification);
+  result.timing.verification_ms = msSince(start);
+
+  database_.add(StoredFrame{query.graph.nodes, query.global});
+  return result;
+}
+
+PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config) {
+  config.validate();
+  const NodeExtractor extractor(config.cluster, config.labels);
+  const auto start = Clock::now();
+  NodeExtractionResult q = extractor.extract(query);
+  NodeExtractionResult m = extractor.extract(match);
+  const double extraction_ms = msSince(start);
+  PairResult result = comparePair(std::move(q.nodes), std::move(m.nodes), config);
+  result.extraction_query = q.stats;
+  result.extraction_match = m.stats;
+  result.timing.extraction_ms = extraction_ms;
+  return result;
+}
+
+PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config) {
+  config.validate();
+  PairResult result;
+  auto start = Clock::now();
+  const DescribedFrame q = describeFrame(std::move(query), config.graph, config.descriptor);
+  const DescribedFrame m = describeFrame(std::move(match), config.graph, config.descriptor);
+  result.timing.description_ms = msSince(start);
+  start = Clock::now();
+  result.match = matchFrames(q, m, config);
+  result.timing.verification_ms = msSince(start);
+  result.query_nodes = q.graph.nodes;
+  result.match_nodes = m.graph.nodes;
+  result.is_loop = isLoop(result.match, config.verification);
+  return result;
+}
+
+}  // namespace sgtllc

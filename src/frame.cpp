@@ -1,0 +1,15 @@
+#include "sgtllc/frame.h"
+
+#include <utility>
+
+namespace sgtllc {
+
+DescribedFrame describeFrame(std::vector<Node> nodes, const GraphConfig& graph, const DescriptorConfig& descriptor) {
+  DescribedFrame f;
+  f.graph = buildGraph(std::move(nodes), graph);
+  f.local = computeLocalDescriptors(f.graph, descriptor);
+  f.global = computeGlobalDescriptor(f.graph, f.local, descriptor);
+  return f;
+}
+
+}  // namespace sgtllc

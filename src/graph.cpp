@@ -1,0 +1,84 @@
+#include "sgtllc/graph.h"
+
+namespace sgtllc {
+namespace {
+
+/// The farthest and second-farthest neighbour of node j of one class (ties to the lower index).
+struct FarthestTwo {
+  int first = -1;
+  int second = -1;
+};
+
+}  // namespace
+
+std::vector<std::pair<int, int>> SemanticGraph::edges() const {
+  std::vector<std::pair<int, int>> out;
+  for (int p = 0; p < size(); ++p) {
+    for (int q = p + 1; q < size(); ++q) {
+      if (adjacent(p, q)) out.emplace_back(p, q);
+    }
+  }
+  return out;
+}
+
+SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config) {
+  SemanticGraph g;
+  g.nodes = std::move(nodes);
+  const int n = g.size();
+  g.distance.resize(n, n);
+  g.adjacency.assign(static_cast<size_t>(n) * n, 0);
+  g.isolated.assign(n, 1);
+  for (int p = 0; p < n; ++p) {
+    g.distance(p, p) = 0.0;
+    for (int q = p + 1; q < n; ++q) {
+      const double d = (g.nodes[p].centre - g.nodes[q].centre).norm();
+      g.distance(p, q) = g.distance(q, p) = d;
+      if (d < config.sigma_d) {  // strict, as the authors' getNeighbor (spec §3)
+        g.adjacency[static_cast<size_t>(p) * n + q] = g.adjacency[static_cast<size_t>(q) * n + p] = 1;
+        g.isolated[p] = g.isolated[q] = 0;
+      }
+    }
+  }
+
+  // For every j and class c: its two farthest neighbours of class c. The best k of a path i→j→k is the farthest
+  // one unless that is i itself (excluded when k ≠ i is required), then the second.
+  std::vector<std::array<FarthestTwo, kNumClasses>> far(n);
+  for (int j = 0; j < n; ++j) {
+    for (int k = 0; k < n; ++k) {
+      if (!g.adjacent(j, k)) continue;
+      FarthestTwo& f = far[j][g.nodes[k].label];
+      const double d = g.distance(j, k);
+      if (f.first < 0 || d > g.distance(j, f.first)) {
+        f.second = f.first;
+        f.first = k;
+      } else if (f.second < 0 || d > g.distance(j, f.second)) {
+        f.second = k;
+      }
+    }
+  }
+
+  g.paths.assign(n, {});
+  for (int i = 0; i < n; ++i) {
+    std::array<double, kNumSlots> best_length;
+    best_length.fill(-1.0);
+    auto& paths = g.paths[i];
+    for (int j = 0; j < n; ++j) {
+      if (!g.adjacent(i, j)) continue;
+      const int m = g.nodes[j].label;
+      for (int c = 0; c < kNumClasses; ++c) {
+        int k = far[j][c].first;
+        if (k == i && !config.allow_k_equals_i) k = far[j][c].second;
+        if (k < 0) continue;
+        const double length = g.distance(i, j) + g.distance(j, k);
+        const int alpha = kNumClasses * m + c;
+        if (length > best_length[alpha]) {  // strict: the first path found (lowest j) keeps a tie
+          best_length[alpha] = length;
+          paths[alpha] = TwoStepPath{j, k};
+        }
+      }
+    }
+  }
+  return g;
+}
+
+}  // namespace sgtllc

@@ -1,0 +1,85 @@
+#include "file_util.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace sgtllc::io::detail {
+
+FilePtr openForReading(const std::string& path) {
+  // fopen succeeds on a directory under glibc and only the read fails, so catch that case with a clear message.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error("cannot open " + path + ": is a directory");
+  FilePtr file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw Error("cannot open " + path + ": " + std::strerror(errno));
+  return file;
+}
+
+std::string readWholeFile(const std::string& path) {
+  FilePtr file = openForReading(path);
+  std::string bytes;
+  char chunk[1 << 16];
+  size_t n = 0;
+  while ((n = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0) bytes.append(chunk, n);
+  if (std::ferror(file.get())) throw Error("cannot read " + path + ": " + std::strerror(errno));
+  return bytes;
+}
+
+void writeFile(const std::string& path, const std::string& content) {
+  FilePtr file(std::fopen(path.c_str(), "wb"), &std::fclose);
+  if (!file) throw Error("cannot write " + path + ": " + std::strerror(errno));
+  const bool written = std::fwrite(content.data(), 1, content.size(), file.get()) == content.size();
+  if (!written || std::fclose(file.release()) != 0) throw Error("cannot write " + path + ": " + std::strerror(errno));
+}
+
+void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes) {
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {
+      throw Error("cannot write " + path + ": node " + std::to_string(i) + " has label " +
+                  std::to_string(nodes[i].label) + ", not a stable class index 0.." + std::to_string(kNumClasses - 1));
+    }
+  }
+}
+
+std::string_view nextLine(std::string_view text, size_t& pos) {
+  const size_t end = std::min(text.find('\n', pos), text.size());
+  const std::string_view line = text.substr(pos, end - pos);
+  pos = std::min(end + 1, text.size());
+  return line;
+}
+
+std::vector<std::string_view> splitBlanks(std::string_view line) {
+  std::vector<std::string_view> tokens;
+  size_t i = 0;
+  while (i < line.size()) {
+    const size_t start = line.find_first_not_of(" \t\r", i);
+    if (start == std::string_view::npos) break;
+    const size_t end = std::min(line.find_first_of(" \t\r", start), line.size());
+    tokens.push_back(line.substr(start, end - start));
+    i = end;
+  }
+  return tokens;
+}
+
+bool parseReal(std::string_view token, double& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+namespace {
+
+template <typename Real>
+void appendReal(std::string& out, Real value) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof(buffer), value);  // shortest exact round trip
+  out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+}  // namespace
+
+void appendShortest(std::string& out, float value) { appendReal(out, value); }
+void appendShortest(std::string& out, double value) { appendReal(out, value); }
+
+}  // namespace sgtllc::io::detail

@@ -1,0 +1,56 @@
+// Private helpers shared by the sgtllc_io readers and writers: opening, reading and writing files with the error
+// messages the public headers document, line and token splitting, and locale-independent number conversion.
+#pragma once
+
+#include <charconv>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "sgtllc/types.h"
+
+namespace sgtllc::io::detail {
+
+using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+// The binary formats (KITTI .bin/.label, PCD binary) are little-endian; big-endian hosts swap after reading.
+inline constexpr bool kHostLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
+
+/// Opens a file for binary reading. Throws `cannot open PATH: REASON` (strerror, or "is a directory").
+FilePtr openForReading(const std::string& path);
+
+/// The whole contents of a file (opened as openForReading); throws `cannot read PATH: REASON` on a read error.
+std::string readWholeFile(const std::string& path);
+
+/// Creates or replaces @p path with @p content. Throws `cannot write PATH: REASON`.
+void writeFile(const std::string& path, const std::string& content);
+
+/// Throws `cannot write PATH: node I has label L, not a stable class index 0..6` for the first node whose label is
+/// not a stable class index. Writers call it before creating the file.
+void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes);
+
+/// Next line of @p text starting at @p pos (without its '\n'); advances @p pos past the newline.
+std::string_view nextLine(std::string_view text, size_t& pos);
+
+/// Splits a line on blanks (space, tab); also drops the '\r' of CRLF files.
+std::vector<std::string_view> splitBlanks(std::string_view line);
+
+/// Parses a whole token as a double, independently of the C locale (strtod follows the process locale's decimal
+/// point). A leading '+' is accepted; "nan" and "inf" parse, so callers that need finite values check.
+bool parseReal(std::string_view token, double& value);
+
+/// Parses a whole token as an integer of type @p Int (decimal, no sign for unsigned types, no leading '+').
+template <typename Int>
+bool parseInteger(std::string_view token, Int& value) {
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+/// Appends the shortest text that reads back to exactly @p value (std::to_chars).
+void appendShortest(std::string& out, float value);
+void appendShortest(std::string& out, double value);
+
+}  // namespace sgtllc::io::detail

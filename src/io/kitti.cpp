@@ -1,0 +1,166 @@
+// KITTI / SemanticKITTI readers. Formats: data/README.md "Formats (short)".
+#include "sgtllc/io/kitti.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string_view>
+
+#include <Eigen/LU>
+
+#include "file_util.h"
+
+namespace sgtllc::io {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::FilePtr;
+using detail::kHostLittleEndian;
+using detail::nextLine;
+using detail::splitBlanks;
+
+uint64_t fileSize(std::FILE* file, const std::string& path) {
+  const long size = (std::fseek(file, 0, SEEK_END) == 0) ? std::ftell(file) : -1L;
+  if (size < 0 || std::fseek(file, 0, SEEK_SET) != 0) throw Error("cannot read " + path + ": " + std::strerror(errno));
+  return static_cast<uint64_t>(size);
+}
+
+template <typename T>
+void swapWordsIfBigEndian(std::vector<T>& words) {
+  static_assert(sizeof(T) == 4);
+  if constexpr (!kHostLittleEndian) {
+    for (T& w : words) {
+      uint32_t u;
+      std::memcpy(&u, &w, 4);
+      u = __builtin_bswap32(u);
+      std::memcpy(&w, &u, 4);
+    }
+  }
+}
+
+/// Reads a whole file of fixed-size records of 4-byte words with one fread (the scans are ~2 MB; speed matters when
+/// streaming a sequence). @p record_words words make one record; @p what describes the record for the size error.
+template <typename T>
+std::vector<T> readWordFile(const std::string& path, size_t record_words, const char* what) {
+  FilePtr file = detail::openForReading(path);
+  const uint64_t bytes = fileSize(file.get(), path);
+  const uint64_t record_bytes = record_words * sizeof(T);
+  if (bytes % record_bytes != 0) {
+    throw Error(path + ": size " + std::to_string(bytes) + " bytes is not a multiple of " +
+                std::to_string(record_bytes) + " (" + what + ")");
+  }
+  std::vector<T> words(bytes / sizeof(T));
+  if (!words.empty() && std::fread(words.data(), sizeof(T), words.size(), file.get()) != words.size()) {
+    throw Error("cannot read " + path + ": " + (std::ferror(file.get()) ? std::strerror(errno) : "file shrank"));
+  }
+  swapWordsIfBigEndian(words);
+  return words;
+}
+
+/// Parses 12 numbers (row-major 3×4 [R|t]) into a 4×4 matrix; @p where prefixes the error ("FILE:LINE").
+Eigen::Matrix4d parseRowMajor3x4(const std::vector<std::string_view>& tokens, size_t first, const std::string& where) {
+  const size_t count = tokens.size() - first;
+  if (count != 12) throw Error(where + ": expected 12 numbers (row-major 3x4), found " + std::to_string(count));
+  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
+  for (Eigen::Index k = 0; k < 12; ++k) {
+    const std::string_view token = tokens[first + static_cast<size_t>(k)];
+    double& value = T(k / 4, k % 4);
+    if (!detail::parseReal(token, value) || !std::isfinite(value)) {
+      throw Error(where + ": '" + std::string(token) + "' is not a finite number");
+    }
+  }
+  return T;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3f> readKittiBin(const std::string& path, std::vector<float>* intensity) {
+  const std::vector<float> raw = readWordFile<float>(path, 4, "x y z intensity float32");
+  const size_t n = raw.size() / 4;
+  std::vector<Eigen::Vector3f> points(n);
+  for (size_t i = 0; i < n; ++i) points[i] = Eigen::Vector3f(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
+  if (intensity) {
+    intensity->resize(n);
+    for (size_t i = 0; i < n; ++i) (*intensity)[i] = raw[4 * i + 3];
+  }
+  return points;
+}
+
+std::vector<uint32_t> readLabelFile(const std::string& path) {
+  return readWordFile<uint32_t>(path, 1, "uint32 labels");
+}
+
+LabeledCloud readLabeledScan(const std::string& bin_path, const std::string& label_path) {
+  LabeledCloud cloud;
+  cloud.points = readKittiBin(bin_path);
+  cloud.labels = readLabelFile(label_path);
+  if (cloud.points.size() != cloud.labels.size()) {
+    throw Error("point/label count mismatch: " + bin_path + " has " + std::to_string(cloud.points.size()) +
+                " points but " + label_path + " has " + std::to_string(cloud.labels.size()) + " labels");
+  }
+  return cloud;
+}
+
+std::string defaultLabelPath(const std::string& bin_path) {
+  const fs::path bin(bin_path);
+  const fs::path name = fs::path(bin.stem()).concat(".label");
+  // `dir/..` rather than dir.parent_path(), so that a bare "NAME.bin" run inside velodyne/ also finds ../labels.
+  const fs::path dir = bin.has_parent_path() ? bin.parent_path() : fs::path(".");
+  const fs::path semantic_kitti = (dir / ".." / "labels" / name).lexically_normal();
+  std::error_code ec;
+  if (fs::is_regular_file(semantic_kitti, ec)) return semantic_kitti.string();
+  return fs::path(bin).replace_extension(".label").string();
+}
+
+std::vector<Eigen::Matrix4d> readKittiPoses(const std::string& path) {
+  const std::string text = detail::readWholeFile(path);
+  std::vector<Eigen::Matrix4d> poses;
+  size_t pos = 0;
+  size_t line_no = 0;
+  size_t first_blank = 0;  // frame i is line i, so a blank line is only allowed if nothing follows it
+  while (pos < text.size()) {
+    ++line_no;
+    const std::vector<std::string_view> tokens = splitBlanks(nextLine(text, pos));
+    if (tokens.empty()) {
+      if (first_blank == 0) first_blank = line_no;
+      continue;
+    }
+    const std::string where = path + ":" + std::to_string(line_no);
+    if (first_blank != 0) {
+      throw Error(where + ": pose after blank line " + std::to_string(first_blank) + " (frame i must be line i)");
+    }
+    poses.push_back(parseRowMajor3x4(tokens, 0, where));
+  }
+  return poses;
+}
+
+Eigen::Matrix4d readKittiCalibTr(const std::string& path) {
+  const std::string text = detail::readWholeFile(path);
+  size_t pos = 0;
+  size_t line_no = 0;
+  while (pos < text.size()) {
+    ++line_no;
+    const std::vector<std::string_view> tokens = splitBlanks(nextLine(text, pos));
+    if (!tokens.empty() && tokens.front() == "Tr:") {
+      return parseRowMajor3x4(tokens, 1, path + ":" + std::to_string(line_no));
+    }
+  }
+  throw Error(path + ": no 'Tr:' line (the velodyne-to-cam0 transform of a KITTI odometry calib.txt)");
+}
+
+std::vector<Eigen::Matrix4d> lidarPoses(const std::vector<Eigen::Matrix4d>& cam_poses, const Eigen::Matrix4d& Tr) {
+  // The full 4×4 inverse, not the rigid shortcut: KITTI's Tr is not exactly orthonormal, and the reference
+  // relative poses in data/README.md were computed with inv(Tr).
+  Eigen::Matrix4d Tr_inv;
+  bool invertible = false;
+  Tr.computeInverseWithCheck(Tr_inv, invertible);
+  if (!invertible) throw Error("lidarPoses: the calibration Tr is not invertible");
+  std::vector<Eigen::Matrix4d> out;
+  out.reserve(cam_poses.size());
+  for (const Eigen::Matrix4d& P : cam_poses) out.push_back(Tr_inv * P * Tr);
+  return out;
+}
+
+}  // namespace sgtllc::io

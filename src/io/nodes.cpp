@@ -1,0 +1,82 @@
+// Plain-text node files `x y z label` (label = raw semantic id).
+#include "sgtllc/io/nodes.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+
+#include "file_util.h"
+
+namespace sgtllc::io {
+namespace {
+
+// SemanticKITTI raw id of each stable class (semantic-kitti.yaml), in class-index order (spec §1 table).
+constexpr std::array<uint32_t, kNumClasses> kSemanticKittiRawId = {50, 51, 70, 71, 72, 80, 81};
+
+constexpr const char* kAxisNames[3] = {"x", "y", "z"};
+
+/// Parses one data row into @p centre and @p id; @p where ("FILE:LINE") prefixes the error.
+void parseRow(const std::vector<std::string_view>& tokens, const std::string& where, Eigen::Vector3d& centre,
+              uint32_t& id) {
+  if (tokens.size() != 4) {
+    throw Error(where + ": expected 4 values (x y z label), found " + std::to_string(tokens.size()));
+  }
+  for (int k = 0; k < 3; ++k) {
+    const std::string_view token = tokens[static_cast<size_t>(k)];
+    if (!detail::parseReal(token, centre[k]) || !std::isfinite(centre[k])) {
+      throw Error(where + ": " + kAxisNames[k] + " '" + std::string(token) + "' is not a finite number");
+    }
+  }
+  if (!detail::parseInteger(tokens[3], id)) {
+    throw Error(where + ": label '" + std::string(tokens[3]) + "' is not an unsigned 32-bit integer id");
+  }
+}
+
+}  // namespace
+
+std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, NodeFileStats* stats) {
+  const std::string text = detail::readWholeFile(path);
+  std::vector<Node> nodes;
+  NodeFileStats counts;
+  size_t pos = 0;
+  size_t line_no = 0;
+  while (pos < text.size()) {
+    ++line_no;
+    const std::vector<std::string_view> tokens = detail::splitBlanks(detail::nextLine(text, pos));
+    if (tokens.empty() || tokens.front().front() == '#') continue;
+    Node node;
+    uint32_t id = 0;
+    parseRow(tokens, path + ":" + std::to_string(line_no), node.centre, id);
+    ++counts.rows;
+    const int8_t cls = labels.classOf(id);
+    if (cls == kDropped) {
+      ++(labels.isKnown(id) ? counts.dropped_known : counts.unknown);
+      continue;
+    }
+    node.label = cls;
+    nodes.push_back(node);
+  }
+  if (stats) *stats = counts;
+  return nodes;
+}
+
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes) {
+  detail::checkNodeLabels(path, nodes);
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (!nodes[i].centre.allFinite()) {
+      throw Error("cannot write " + path + ": node " + std::to_string(i) + " has a non-finite centre");
+    }
+  }
+  std::string out = "# x y z label (SemanticKITTI raw id)\n";
+  for (const Node& node : nodes) {
+    for (int k = 0; k < 3; ++k) {
+      detail::appendShortest(out, node.centre[k]);
+      out += ' ';
+    }
+    out += std::to_string(kSemanticKittiRawId[static_cast<size_t>(node.label)]) + '\n';
+  }
+  detail::writeFile(path, out);
+}
+
+}  // namespace sgtllc::io

@@ -1,0 +1,71 @@
+#include "kdtree_index.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <nanoflann.hpp>
+
+namespace sgtllc::internal {
+namespace {
+
+/// nanoflann dataset concept over the external row-major matrix.
+struct RowsAdaptor {
+  const std::vector<float>* rows;
+  int dim;
+  int count;
+  size_t kdtree_get_point_count() const { return static_cast<size_t>(count); }
+  float kdtree_get_pt(uint32_t idx, size_t d) const { return (*rows)[static_cast<size_t>(idx) * dim + d]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+
+}  // namespace
+
+struct KdTreeIndex::Tree {
+  using Index = nanoflann::KDTreeSingleIndexDynamicAdaptor<nanoflann::L2_Simple_Adaptor<float, RowsAdaptor>,
+                                                           RowsAdaptor, -1, uint32_t>;
+  RowsAdaptor adaptor;
+  Index index;
+  Tree(const std::vector<float>* rows, int dim)
+      : adaptor{rows, dim, 0}, index(dim, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
+};
+
+KdTreeIndex::KdTreeIndex(const std::vector<float>* rows, int dim)
+    : tree_(std::make_unique<Tree>(rows, dim)) {}
+
+KdTreeIndex::~KdTreeIndex() = default;
+
+void KdTreeIndex::extendTo(int last) {
+  if (last < indexed_) return;
+  tree_->adaptor.count = last + 1;
+  tree_->index.addPoints(static_cast<uint32_t>(indexed_), static_cast<uint32_t>(last));
+  indexed_ = last + 1;
+}
+
+void KdTreeIndex::knn(const float* query, int k, std::vector<std::pair<int, float>>* out) const {
+  const size_t want = std::min<size_t>(static_cast<size_t>(k), static_cast<size_t>(indexed_));
+  if (want == 0) return;
+  std::vector<uint32_t> idx(want);
+  std::vector<float> d2(want);
+  nanoflann::KNNResultSet<float, uint32_t> result(want);
+  result.init(idx.data(), d2.data());
+  tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
+  // nanoflann admits a point only if it is strictly closer than the current k-th, so among points tied with the
+  // k-th distance it keeps whichever it met first. Collect every point up to that distance (inclusive) and keep
+  // the k best by (distance, index), as the linear scan does; frames without nodes tie at the zero descriptor.
+  const float worst = d2[result.size() - 1];
+  std::vector<std::pair<uint32_t, float>> within;
+  nanoflann::RadiusResultSet<float, uint32_t> ball(std::nextafter(worst, std::numeric_limits<float>::infinity()),
+                                                   within);
+  tree_->index.findNeighbors(ball, query, nanoflann::SearchParams());
+  std::sort(within.begin(), within.end(), [](const auto& a, const auto& b) {
+    return a.second < b.second || (a.second == b.second && a.first < b.first);
+  });
+  within.resize(std::min(within.size(), want));
+  for (const auto& [i, d] : within) out->emplace_back(static_cast<int>(i), d);
+}
+
+}  // namespace sgtllc::internal

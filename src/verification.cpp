@@ -1,0 +1,56 @@
+#include "sgtllc/verification.h"
+
+#include "sgtllc/ransac.h"
+
+namespace sgtllc {
+
+RansacParams ransacParams(const VerificationConfig& config) {
+  RansacParams p;
+  p.iterations = config.ransac_iterations;
+  p.sample_size = config.ransac_sample_size;
+  p.with_replacement = config.sample_with_replacement;
+  p.inlier_threshold = config.inlier_threshold;
+  p.min_inliers = config.min_inliers;
+  p.min_inlier_fraction = config.min_inlier_fraction;
+  p.confidence = config.ransac_confidence;
+  p.seed = config.seed;
+  return p;
+}
+
+MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
+  const VerificationConfig& vc = config.verification;
+  MatchResult result;
+  result.associations = associateNodes(query, match, config.association, config.descriptor.order);
+  const int la = static_cast<int>(result.associations.size());
+  result.score_c = query.numNodes() > 0 ? static_cast<double>(la) / query.numNodes() : 0.0;
+  if (result.score_c < vc.sigma_3 || la < vc.min_associations || la == 0) {
+    result.rejection = Rejection::kFewAssociations;
+    return result;
+  }
+
+  // Source = query node centres, target = match node centres, so the pose maps query into match (spec §7.5).
+  std::vector<Eigen::Vector3d> source, target;
+  for (const NodeMatch& m : result.associations) {
+    source.push_back(query.graph.nodes[m.query].centre);
+    target.push_back(match.graph.nodes[m.match].centre);
+  }
+  const RansacResult ransac = ransacRigid(source, target, ransacParams(vc));
+  if (!ransac.accepted) {
+    result.rejection = Rejection::kRansacFailed;
+    return result;
+  }
+  result.rejection = Rejection::kNone;
+  result.inliers = ransac.inliers;
+  const double n_in = static_cast<double>(ransac.inliers.size());
+  result.score_t = (vc.score_formula == ScoreFormula::kPaper ? n_in : n_in - 1.0) / la;
+
+  std::vector<Eigen::Vector3d> src_in, dst_in;
+  for (int k : ransac.inliers) {
+    src_in.push_back(source[k]);
+    dst_in.push_back(target[k]);
+  }
+  result.T_match_query = fitRigid(src_in, dst_in);
+  return result;
+}
+
+}  // namespace sgtllc

@@ -1,0 +1,227 @@
+// The sgtllc command: results on the bundled scans, JSON keys, sequences, and a clear message with a non-zero
+// exit code for every kind of bad input.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace sgtllc {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+struct CliRun {
+  int status = -1;
+  std::string out;  // stdout and stderr together
+};
+
+CliRun run(const std::string& args, bool with_stderr = true) {
+  const std::string cmd = std::string(SGTLLC_CLI) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+  CliRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int st = pclose(pipe);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+std::string scan(const std::string& frame) { return test::dataPath("kitti/00/velodyne/" + frame + ".bin"); }
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sgtllc_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  void writeBytes(const std::string& name, const std::string& bytes) const {
+    std::ofstream(path(name), std::ios::binary) << bytes;
+  }
+  template <typename T>
+  void writeArray(const std::string& name, const std::vector<T>& v) const {
+    std::ofstream(path(name), std::ios::binary)
+        .write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, PairReportsTheRevisitAndItsPose) {
+  const CliRun r = run("pair " + scan("004501") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("loop: YES"));
+  EXPECT_THAT(r.out, HasSubstr("T_match_query"));
+  const CliRun n = run("pair " + scan("000850") + " " + scan("000088"));
+  EXPECT_EQ(n.status, 0) << n.out;
+  EXPECT_THAT(n.out, HasSubstr("loop: no"));
+}
+
+TEST_F(Cli, PairJsonHasTheDocumentedKeys) {
+  const CliRun r = run("pair --json " + scan("004501") + " " + scan("000052"), false);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"loop", "score", "score_c", "nodes_query", "nodes_match", "associations", "inliers",
+                          "T_match_query", "timing_ms"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_TRUE(j["loop"].get<bool>());
+  EXPECT_EQ(j["T_match_query"].size(), 4u);
+  EXPECT_EQ(j["T_match_query"][0].size(), 4u);
+  EXPECT_NEAR(j["T_match_query"][0][3].get<double>(), 2.988, 0.15);
+  EXPECT_GT(j["score"].get<double>(), 0.3);
+  EXPECT_EQ(j["inliers"].get<int>() <= j["associations"].get<int>(), true);
+  for (const char* stage : {"load", "extraction", "description", "verification", "total"}) {
+    EXPECT_TRUE(j["timing_ms"].contains(stage)) << stage;
+  }
+}
+
+TEST_F(Cli, MissingFileIsNamed) {
+  const CliRun r = run("pair " + path("nope.bin") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr(path("nope.bin")));
+}
+
+TEST_F(Cli, TruncatedBinIsNamed) {
+  writeBytes("bad.bin", std::string(17, '\0'));
+  writeBytes("bad.label", std::string(4, '\0'));
+  const CliRun r = run("pair " + path("bad.bin") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("bad.bin"));
+  EXPECT_THAT(r.out, HasSubstr("multiple of 16"));
+}
+
+TEST_F(Cli, LabelCountMismatchIsNamed) {
+  writeArray<float>("two.bin", {1, 2, 3, 0, 4, 5, 6, 0});
+  writeArray<uint32_t>("two.label", {50, 50, 50});
+  const CliRun r = run("pair " + path("two.bin") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("two.label"));
+  EXPECT_THAT(r.out, HasSubstr("3"));
+}
+
+TEST_F(Cli, NonFinitePointsAndUnknownIdsWarnButRun) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  writeArray<float>("odd.bin", {nan, 0, 0, 0, 1, 2, 3, 0, 4, 5, 6, 0});
+  writeArray<uint32_t>("odd.label", {50, 777, 40});
+  const CliRun r = run("pair " + path("odd.bin") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("dropped 1 points with NaN or Inf"));
+  EXPECT_THAT(r.out, HasSubstr("ignored 1 points whose label id"));
+  EXPECT_THAT(r.out, HasSubstr("no graph nodes"));
+  EXPECT_THAT(r.out, HasSubstr("loop: no"));
+}
+
+TEST_F(Cli, EmptyScanIsNoLoopNotAnError) {
+  writeBytes("empty.bin", "");
+  writeBytes("empty.label", "");
+  const CliRun r = run("pair " + path("empty.bin") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("loop: no"));
+}
+
+TEST_F(Cli, BadConfigKeysAreNamed) {
+  writeBytes("typo.yaml", "verification:\n  sigma4: 0.2\n");
+  const CliRun r = run("pair --config " + path("typo.yaml") + " " + scan("004501") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("typo.yaml:2"));
+  EXPECT_THAT(r.out, HasSubstr("unknown key 'verification.sigma4'"));
+  writeBytes("bad.yaml", "graph:\n  sigma_d: thirty\n");
+  const CliRun b = run("config --config " + path("bad.yaml"));
+  EXPECT_EQ(b.status, 1);
+  EXPECT_THAT(b.out, HasSubstr("graph.sigma_d"));
+}
+
+TEST_F(Cli, ConfigOutputIsReadBack) {
+  const CliRun r = run("config", false);
+  ASSERT_EQ(r.status, 0);
+  writeBytes("defaults.yaml", r.out);
+  const CliRun again = run("config --config " + path("defaults.yaml"), false);
+  EXPECT_EQ(again.status, 0);
+  EXPECT_EQ(again.out, r.out);
+}
+
+TEST_F(Cli, BadCommandLineIsAUsageError) {
+  EXPECT_EQ(run("pair " + scan("004501")).status, 2);
+  EXPECT_EQ(run("frobnicate").status, 2);
+}
+
+/// A SemanticKITTI-layout sequence: 52, 88, 50 frames without stable classes, 850, 4501.
+void makeSequence(const fs::path& dir) {
+  fs::create_directories(dir / "velodyne");
+  fs::create_directories(dir / "labels");
+  int index = 0;
+  auto add = [&](const std::string& bin, const std::string& label) {
+    char name[16];
+    std::snprintf(name, sizeof(name), "%06d", index++);
+    fs::copy_file(bin, dir / "velodyne" / (std::string(name) + ".bin"));
+    fs::copy_file(label, dir / "labels" / (std::string(name) + ".label"));
+  };
+  auto real = [&](const std::string& frame) {
+    add(scan(frame), test::dataPath("kitti/00/labels/" + frame + ".label"));
+  };
+  real("000052");
+  real("000088");
+  std::ofstream(dir / "one.bin", std::ios::binary).write("\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0", 16);
+  const uint32_t road = 40;
+  std::ofstream(dir / "one.label", std::ios::binary).write(reinterpret_cast<const char*>(&road), 4);
+  for (int k = 0; k < 50; ++k) add((dir / "one.bin").string(), (dir / "one.label").string());
+  real("000850");
+  real("004501");
+}
+
+TEST_F(Cli, RunFindsThePlantedLoopAndWritesCsv) {
+  makeSequence(dir_ / "seq");
+  const CliRun r = run("run " + (dir_ / "seq").string() + " --out " + path("loops.csv"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("loop 000053 -> 000000"));
+  EXPECT_THAT(r.out, HasSubstr("frames 54, loops 1"));
+  std::ifstream csv(path("loops.csv"));
+  std::string header, line, extra;
+  std::getline(csv, header);
+  std::getline(csv, line);
+  EXPECT_FALSE(std::getline(csv, extra));
+  EXPECT_EQ(header.substr(0, 26), "query,match,score,score_c,");
+  EXPECT_EQ(line.substr(0, 14), "000053,000000,");
+  EXPECT_EQ(std::count(line.begin(), line.end(), ','), 15);
+
+  // Same bytes at two threads; the existing file is kept unless --force.
+  const CliRun refuse = run("run " + (dir_ / "seq").string() + " --out " + path("loops.csv"));
+  EXPECT_EQ(refuse.status, 1);
+  EXPECT_THAT(refuse.out, HasSubstr("--force"));
+  const CliRun two = run("run " + (dir_ / "seq").string() + " --threads 2 --out " + path("loops2.csv"));
+  ASSERT_EQ(two.status, 0) << two.out;
+  std::ifstream a(path("loops.csv")), b(path("loops2.csv"));
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+}
+
+TEST_F(Cli, RunNamesAMissingLabelFile) {
+  makeSequence(dir_ / "seq");
+  fs::remove(dir_ / "seq" / "labels" / "000010.label");
+  const CliRun r = run("run " + (dir_ / "seq").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("000010.label"));
+  const CliRun none = run("run " + path("no_such_sequence"));
+  EXPECT_EQ(none.status, 1);
+  EXPECT_THAT(none.out, HasSubstr("no_such_sequence"));
+}
+
+}  // namespace
+}  // namespace sgtllc

@@ -1,0 +1,215 @@
+// End-to-end tests on the bundled real KITTI 00 scans: the pair decision and pose, robustness to dropped points,
+// rigid self-matching, the online detector on short sequences, and determinism across runs and thread counts.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "sgtllc/detector.h"
+#include "test_support.h"
+
+namespace sgtllc {
+namespace {
+
+using test::kittiScan;
+using test::poseError;
+
+LabeledCloud dropPoints(const LabeledCloud& cloud, double share, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  LabeledCloud out;
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    if (u(rng) < share) continue;
+    out.points.push_back(cloud.points[i]);
+    out.labels.push_back(cloud.labels[i]);
+  }
+  return out;
+}
+
+class KittiPairs : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    s52 = new LabeledCloud(kittiScan("000052"));
+    s4501 = new LabeledCloud(kittiScan("004501"));
+    s88 = new LabeledCloud(kittiScan("000088"));
+    s850 = new LabeledCloud(kittiScan("000850"));
+  }
+  static void TearDownTestSuite() {
+    delete s52;
+    delete s4501;
+    delete s88;
+    delete s850;
+  }
+  static LabeledCloud *s52, *s4501, *s88, *s850;
+};
+LabeledCloud *KittiPairs::s52, *KittiPairs::s4501, *KittiPairs::s88, *KittiPairs::s850;
+
+TEST_F(KittiPairs, RevisitIsALoopWithAccuratePose) {
+  const PairResult r = comparePair(*s4501, *s52);
+  EXPECT_TRUE(r.is_loop);
+  EXPECT_EQ(r.match.rejection, Rejection::kNone);
+  EXPECT_GT(r.match.score_t, Config{}.verification.sigma_4);
+  EXPECT_GE(r.match.inliers.size(), 7u);
+  // Acceptance bound: 0.15 m and 1 degree against the ICP-refined reference.
+  const auto err = poseError(r.match.T_match_query, test::referencePose4501To52());
+  EXPECT_LT(err.translation_m, 0.15);
+  EXPECT_LT(err.rotation_deg, 1.0);
+  // Object-level SVD on ground-truth labels reaches a few centimetres here (spec §11: 2.2 cm).
+  EXPECT_LT(err.translation_m, 0.05);
+}
+
+TEST_F(KittiPairs, DistantPlacesAreNotALoop) {
+  const PairResult r = comparePair(*s850, *s88);
+  EXPECT_FALSE(r.is_loop);
+  EXPECT_EQ(r.match.score_t, 0.0);
+  EXPECT_NE(r.match.rejection, Rejection::kNone);
+  // Also across the two places the other way round, and between the loop scans and the other place.
+  EXPECT_FALSE(comparePair(*s88, *s850).is_loop);
+  EXPECT_FALSE(comparePair(*s4501, *s88).is_loop);
+  EXPECT_FALSE(comparePair(*s850, *s52).is_loop);
+}
+
+TEST_F(KittiPairs, RevisitSurvivesDroppingAFifthOfThePoints) {
+  for (uint32_t seed : {1u, 2u, 3u}) {
+    const PairResult r = comparePair(dropPoints(*s4501, 0.2, seed), dropPoints(*s52, 0.2, seed + 100));
+    ASSERT_TRUE(r.is_loop) << "seed " << seed;
+    const auto err = poseError(r.match.T_match_query, test::referencePose4501To52());
+    EXPECT_LT(err.translation_m, 0.15) << "seed " << seed;
+    EXPECT_LT(err.rotation_deg, 1.0) << "seed " << seed;
+  }
+}
+
+TEST_F(KittiPairs, RigidCopyGivesBackItsTransform) {
+  // Large yaw, a few degrees of tilt, metres of shift. Node centres are means of each cluster's original points,
+  // so the axis-aligned voxel grid does not move them (spec §11).
+  const Eigen::Matrix4d T = test::rigid(137.0, 3.0, -2.0, Eigen::Vector3d(12.5, -7.25, 1.5));
+  for (const LabeledCloud* scan : {s52, s88}) {
+    const PairResult r = comparePair(test::transformed(*scan, T), *scan);
+    ASSERT_TRUE(r.is_loop);
+    // T maps the original into the copy, so the copy (query) maps into the original (match) by T⁻¹.
+    const auto err = poseError(r.match.T_match_query, T.inverse());
+    EXPECT_LT(err.translation_m, 0.02);
+    EXPECT_LT(err.rotation_deg, 0.1);
+  }
+}
+
+TEST_F(KittiPairs, EmptyAndClasslessScansHaveNoNodesAndNoLoop) {
+  LabeledCloud empty;
+  const PairResult a = comparePair(empty, *s52);
+  EXPECT_EQ(a.query_nodes.size(), 0u);
+  EXPECT_FALSE(a.is_loop);
+  LabeledCloud roads = *s52;
+  std::fill(roads.labels.begin(), roads.labels.end(), 40u);  // all road: no stable class
+  const PairResult b = comparePair(roads, *s52);
+  EXPECT_EQ(b.query_nodes.size(), 0u);
+  EXPECT_FALSE(b.is_loop);
+}
+
+TEST_F(KittiPairs, NonFiniteAndUnknownPointsAreDroppedAndCounted) {
+  LabeledCloud scan = *s4501;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  scan.points.push_back({nan, 0.f, 0.f});
+  scan.points.push_back({1.f, inf, 0.f});
+  scan.labels.push_back(50);
+  scan.labels.push_back(70);
+  scan.points.push_back({1.f, 2.f, 3.f});
+  scan.labels.push_back(12345);  // not a SemanticKITTI id
+  const PairResult r = comparePair(scan, *s52);
+  EXPECT_EQ(r.extraction_query.nonfinite_points, 2u);
+  EXPECT_EQ(r.extraction_query.unknown_label_points, 1u);
+  EXPECT_TRUE(r.is_loop);
+  scan.labels.pop_back();
+  EXPECT_THROW(comparePair(scan, *s52), std::invalid_argument);
+}
+
+/// frames: 52, 88, `padding` frames without nodes, 850, then optionally 4501 (the revisit of frame 0).
+std::vector<FrameResult> runSequence(const std::vector<const LabeledCloud*>& scans, int padding, int threads,
+                                     int exclude_recent = Config{}.retrieval.exclude_recent) {
+  Config config;
+  config.threads = threads;
+  config.retrieval.exclude_recent = exclude_recent;
+  LoopDetector detector(config);
+  std::vector<FrameResult> results;
+  results.push_back(detector.process(*scans[0]));
+  results.push_back(detector.process(*scans[1]));
+  for (int k = 0; k < padding; ++k) results.push_back(detector.process(LabeledCloud{}));
+  for (size_t s = 2; s < scans.size(); ++s) results.push_back(detector.process(*scans[s]));
+  return results;
+}
+
+TEST_F(KittiPairs, OnlineDetectorFindsThePlantedRevisitOnly) {
+  const int padding = Config{}.retrieval.exclude_recent;
+  const auto with = runSequence({s52, s88, s850, s4501}, padding, 1);
+  int loops = 0;
+  for (const FrameResult& r : with) loops += r.is_loop;
+  EXPECT_EQ(loops, 1);
+  const FrameResult& last = with.back();
+  ASSERT_TRUE(last.is_loop);
+  EXPECT_EQ(last.loop()->frame, 0);
+  EXPECT_EQ(last.frame, padding + 3);
+  // Frames younger than the exclusion gap are never candidates.
+  for (const Candidate& c : last.candidates) EXPECT_LE(c.frame, last.frame - padding);
+  const auto err = poseError(last.loop()->match.T_match_query, test::referencePose4501To52());
+  EXPECT_LT(err.translation_m, 0.15);
+  EXPECT_LT(err.rotation_deg, 1.0);
+
+  const auto without = runSequence({s52, s88, s850}, padding, 1);
+  for (const FrameResult& r : without) EXPECT_FALSE(r.is_loop) << "frame " << r.frame;
+}
+
+TEST_F(KittiPairs, NodeInputGivesTheSameResultAsPointInput) {
+  LoopDetector from_points, from_nodes;
+  const NodeExtractor extractor(Config{}.cluster, Config{}.labels);
+  for (const LabeledCloud* s : {s52, s88, s850, s4501}) {
+    const FrameResult a = from_points.process(*s);
+    const FrameResult b = from_nodes.process(extractor.extract(*s).nodes);
+    EXPECT_EQ(a.num_nodes, b.num_nodes);
+    EXPECT_EQ(a.candidates.size(), b.candidates.size());
+  }
+}
+
+void expectIdentical(const std::vector<FrameResult>& a, const std::vector<FrameResult>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t f = 0; f < a.size(); ++f) {
+    EXPECT_EQ(a[f].num_nodes, b[f].num_nodes);
+    EXPECT_EQ(a[f].is_loop, b[f].is_loop);
+    EXPECT_EQ(a[f].best, b[f].best);
+    ASSERT_EQ(a[f].candidates.size(), b[f].candidates.size());
+    for (size_t c = 0; c < a[f].candidates.size(); ++c) {
+      const MatchResult& x = a[f].candidates[c].match;
+      const MatchResult& y = b[f].candidates[c].match;
+      EXPECT_EQ(a[f].candidates[c].frame, b[f].candidates[c].frame);
+      EXPECT_EQ(a[f].candidates[c].distance2, b[f].candidates[c].distance2);
+      EXPECT_EQ(x.score_t, y.score_t);
+      EXPECT_EQ(x.score_c, y.score_c);
+      EXPECT_EQ(x.inliers, y.inliers);
+      EXPECT_TRUE(x.T_match_query == y.T_match_query);  // bit-for-bit
+    }
+  }
+}
+
+TEST_F(KittiPairs, OutputIsIdenticalOnReRunAndAtOneOrTwoThreads) {
+  // A small gap so that every frame has several candidates to verify in parallel.
+  const std::vector<const LabeledCloud*> scans = {s52, s88, s850, s4501, s52, s850, s4501, s88};
+  const auto one = runSequence(scans, 2, 1, 1);
+  const auto again = runSequence(scans, 2, 1, 1);
+  const auto two = runSequence(scans, 2, 2, 1);
+  int verified = 0, loops = 0;
+  for (const auto& r : one) {
+    verified += static_cast<int>(r.candidates.size());
+    loops += r.is_loop;
+  }
+  EXPECT_GT(verified, 30);
+  EXPECT_GE(loops, 3);  // the repeated scans and 4501 → 52
+  expectIdentical(one, again);
+  expectIdentical(one, two);
+}
+
+TEST(LoopDetector, RejectsAnInvalidConfig) {
+  Config config;
+  config.graph.sigma_d = -1.0;
+  EXPECT_THROW(LoopDetector{config}, Error);
+}
+
+}  // namespace
+}  // namespace sgtllc

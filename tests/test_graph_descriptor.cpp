@@ -1,0 +1,482 @@
+// Graph (spec §3), local descriptors (§4) and global descriptors (§5): hand-computed graphs, brute-force path and
+// pooling references on random node sets, and rigid-motion invariance on a real KITTI scan.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "sgtllc/descriptor.h"
+#include "sgtllc/frame.h"
+#include "sgtllc/global_descriptor.h"
+#include "sgtllc/graph.h"
+#include "sgtllc/io/kitti.h"
+#include "sgtllc/node_extraction.h"
+
+namespace {
+
+using sgtllc::GlobalMode;
+using sgtllc::GraphConfig;
+using sgtllc::kNumClasses;
+using sgtllc::kNumSlots;
+using sgtllc::Node;
+using sgtllc::SubVectorOrder;
+
+constexpr int slot(int m, int n) { return kNumClasses * m + n; }
+
+Node node(double x, double y, double z, int label) { return Node{Eigen::Vector3d(x, y, z), label}; }
+
+std::vector<Node> transformed(const std::vector<Node>& nodes, const Eigen::Isometry3d& T) {
+  std::vector<Node> out = nodes;
+  for (Node& n : out) n.centre = T * n.centre;
+  return out;
+}
+
+/// Yaw anywhere, roll and pitch within ±max_tilt_deg, shift within ±max_shift per axis.
+Eigen::Isometry3d randomRigid(std::mt19937& rng, double max_tilt_deg, double max_shift) {
+  std::uniform_real_distribution<double> yaw(0.0, 2.0 * M_PI), tilt(-max_tilt_deg, max_tilt_deg),
+      shift(-max_shift, max_shift);
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = (Eigen::AngleAxisd(yaw(rng), Eigen::Vector3d::UnitZ()) *
+                Eigen::AngleAxisd(tilt(rng) * M_PI / 180.0, Eigen::Vector3d::UnitY()) *
+                Eigen::AngleAxisd(tilt(rng) * M_PI / 180.0, Eigen::Vector3d::UnitX()))
+                   .toRotationMatrix();
+  T.translation() = Eigen::Vector3d(shift(rng), shift(rng), shift(rng));
+  return T;
+}
+
+// --- Brute-force references ----------------------------------------------------------------------------------------
+
+struct RefGraph {
+  std::vector<std::vector<bool>> adj;
+  std::vector<bool> isolated;
+  std::vector<std::array<std::pair<int, int>, kNumSlots>> paths;  ///< (j, k) or (−1, −1)
+};
+
+double dist(const std::vector<Node>& nodes, int a, int b) { return (nodes[a].centre - nodes[b].centre).norm(); }
+
+/// O(N³) path search straight from spec §3: lowest j, then lowest k, wins a tie (strict >).
+RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool allow_k_equals_i) {
+  const int n = static_cast<int>(nodes.size());
+  RefGraph g;
+  g.adj.assign(n, std::vector<bool>(n, false));
+  g.isolated.assign(n, true);
+  for (int a = 0; a < n; ++a) {
+    for (int b = 0; b < n; ++b) {
+      g.adj[a][b] = a != b && dist(nodes, a, b) < sigma_d;
+      if (g.adj[a][b]) g.isolated[a] = false;
+    }
+  }
+  g.paths.resize(n);
+  for (int i = 0; i < n; ++i) {
+    for (int m = 0; m < kNumClasses; ++m) {
+      for (int c = 0; c < kNumClasses; ++c) {
+        std::pair<int, int> best(-1, -1);
+        double best_len = -1.0;
+        for (int j = 0; j < n; ++j) {
+          if (!g.adj[i][j] || nodes[j].label != m) continue;
+          for (int k = 0; k < n; ++k) {
+            if (!g.adj[j][k] || nodes[k].label != c || (k == i && !allow_k_equals_i)) continue;
+            const double len = dist(nodes, i, j) + dist(nodes, j, k);
+            if (len > best_len) {
+              best_len = len;
+              best = {j, k};
+            }
+          }
+        }
+        g.paths[i][slot(m, c)] = best;
+      }
+    }
+  }
+  return g;
+}
+
+/// (a_i, a_j, a_k) written out from the definition (spec §4).
+Eigen::Vector3d terms(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& pk) {
+  return {(pj - pi).dot(pk - pi), (pi - pj).dot(pk - pj), (pi - pk).dot(pj - pk)};
+}
+
+/// Des^G from spec §5 / global_descriptor.h with the reference paths, in double. G1 pools the stored entry [2]:
+/// a_k in the paper order, −a_j in the code order.
+std::vector<double> bruteGlobal(const std::vector<Node>& nodes, const RefGraph& g, GlobalMode mode,
+                                SubVectorOrder order) {
+  std::vector<double> des(mode == GlobalMode::kG2 ? 343 : 98, 0.0);
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    for (int a = 0; a < kNumSlots; ++a) {
+      const auto [j, k] = g.paths[i][a];
+      if (j < 0) continue;
+      const int o = nodes[i].label, m = a / 7, n = a % 7, fuzzy = m <= 2 ? 0 : 1;
+      const Eigen::Vector3d pi = nodes[i].centre, pj = nodes[j].centre, pk = nodes[k].centre;
+      const double cos_k = (pi - pk).dot(pj - pk) / ((pi - pk).norm() * (pj - pk).norm());
+      const Eigen::Vector3d t = terms(pi, pj, pk);
+      const double entry2 = order == SubVectorOrder::kPaper ? t[2] : -t[1];
+      const double value = mode == GlobalMode::kG1 ? entry2 : 1.0 - cos_k;
+      const int cell = mode == GlobalMode::kG2 ? 49 * o + a : 14 * o + 7 * fuzzy + n;
+      des[cell] = std::max(des[cell], value);
+    }
+  }
+  return des;
+}
+
+std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> xy(0.0, 80.0), z(0.0, 4.0);
+  std::uniform_int_distribution<int> label(0, kNumClasses - 1), grid(0, 40);
+  std::vector<Node> nodes(n);
+  for (Node& nd : nodes) {
+    // Lattice nodes tie often (equal path lengths, distances of exactly σ_d = 30 m).
+    nd.centre = lattice ? Eigen::Vector3d(grid(rng), grid(rng), 0.0) : Eigen::Vector3d(xy(rng), xy(rng), z(rng));
+    nd.label = label(rng);
+  }
+  return nodes;
+}
+
+// --- Checks shared by the tests ------------------------------------------------------------------------------------
+
+/// 0 building (0,0,0), 1 fence (3,0,0), 2 vegetation (0,4,0): a 3-4-5 right triangle; 3 pole at (30,0,0), exactly
+/// σ_d from node 0 (not adjacent), 27 m from node 1; 4 trunk far away (isolated).
+std::vector<Node> handNodes() {
+  return {node(0, 0, 0, sgtllc::kBuilding), node(3, 0, 0, sgtllc::kFence), node(0, 4, 0, sgtllc::kVegetation),
+          node(30, 0, 0, sgtllc::kPole), node(100, 0, 0, sgtllc::kTrunk)};
+}
+
+/// Checks a whole descriptor: the listed cells hold the given values, every other cell is 0.
+void expectCells(const std::vector<float>& des, size_t size, const std::map<int, double>& cells) {
+  ASSERT_EQ(des.size(), size);
+  for (size_t c = 0; c < size; ++c) {
+    const auto it = cells.find(static_cast<int>(c));
+    EXPECT_NEAR(des[c], it == cells.end() ? 0.0 : it->second, 1e-5) << "cell " << c;
+  }
+}
+
+void expectGraphMatches(const std::vector<Node>& nodes, const GraphConfig& cfg) {
+  const auto g = sgtllc::buildGraph(nodes, cfg);
+  const RefGraph ref = bruteGraph(nodes, cfg.sigma_d, cfg.allow_k_equals_i);
+  const int n = static_cast<int>(nodes.size());
+  ASSERT_EQ(g.size(), n);
+  for (int a = 0; a < n; ++a) {
+    ASSERT_EQ(g.isolated[a] != 0, ref.isolated[a]) << "node " << a;
+    for (int b = 0; b < n; ++b) ASSERT_EQ(g.adjacent(a, b), ref.adj[a][b]) << a << "," << b;
+    for (int s = 0; s < kNumSlots; ++s) {
+      ASSERT_EQ(std::make_pair(g.paths[a][s].j, g.paths[a][s].k), ref.paths[a][s]) << "node " << a << " slot " << s;
+    }
+  }
+  // Local descriptors follow the reference paths (paper order).
+  const auto des = sgtllc::computeLocalDescriptors(g, {});
+  for (int i = 0; i < n; ++i) {
+    for (int s = 0; s < kNumSlots; ++s) {
+      const auto [j, k] = ref.paths[i][s];
+      ASSERT_EQ(des[i].isValid(s), j >= 0);
+      const Eigen::Vector3f want =
+          j < 0 ? Eigen::Vector3f::Zero()
+                : terms(nodes[i].centre, nodes[j].centre, nodes[k].centre).cast<float>().eval();
+      ASSERT_EQ(des[i].slots[s], want) << "node " << i << " slot " << s;
+    }
+  }
+}
+
+sgtllc::LabeledCloud loadScan52() {
+  const std::string dir = std::string(SGTLLC_DATA_DIR) + "/kitti/00/";
+  return sgtllc::io::readLabeledScan(dir + "velodyne/000052.bin", dir + "labels/000052.label");
+}
+
+/// Local descriptors (slot by slot, relative 1e-4) and all three global descriptors of two node sets agree; node i
+/// of @p a corresponds to node i of @p b.
+void expectSameDescriptors(const std::vector<Node>& a, const std::vector<Node>& b) {
+  for (GlobalMode mode : {GlobalMode::kG1, GlobalMode::kG2, GlobalMode::kG3}) {
+    sgtllc::DescriptorConfig cfg;
+    cfg.global_mode = mode;
+    const auto fa = sgtllc::describeFrame(a, GraphConfig{}, cfg);
+    const auto fb = sgtllc::describeFrame(b, GraphConfig{}, cfg);
+    for (size_t i = 0; i < a.size(); ++i) {
+      const auto& da = fa.local[i];
+      const auto& db = fb.local[i];
+      ASSERT_EQ(da.valid, db.valid) << "node " << i;
+      for (int s = 0; s < kNumSlots; ++s) {
+        const float tol = 1e-4f * std::max(1.0f, da.slots[s].cwiseAbs().maxCoeff());
+        ASSERT_LE((da.slots[s] - db.slots[s]).cwiseAbs().maxCoeff(), tol) << "node " << i << " slot " << s;
+      }
+    }
+    ASSERT_EQ(fa.global.size(), fb.global.size());
+    for (size_t c = 0; c < fa.global.size(); ++c) {
+      EXPECT_NEAR(fa.global[c], fb.global[c], 1e-4 * std::max(1.0f, std::abs(fa.global[c]))) << "cell " << c;
+    }
+  }
+}
+
+// --- (a) Hand-built graphs -----------------------------------------------------------------------------------------
+
+TEST(Graph, HandBuiltAdjacency) {
+  const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
+  ASSERT_EQ(g.size(), 5);
+  EXPECT_EQ(g.edges(), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}, {1, 3}}));
+  EXPECT_DOUBLE_EQ(g.distance(0, 3), 30.0);
+  EXPECT_FALSE(g.adjacent(0, 3));  // exactly σ_d: strict <
+  EXPECT_FALSE(g.adjacent(3, 0));
+  EXPECT_TRUE(g.adjacent(3, 1));
+  EXPECT_FALSE(g.adjacent(2, 2));
+  EXPECT_DOUBLE_EQ(g.distance(1, 2), 5.0);
+  EXPECT_EQ(g.isolated, (std::vector<uint8_t>{0, 0, 0, 0, 1}));
+  GraphConfig wider;
+  wider.sigma_d = 30.000001;
+  EXPECT_TRUE(sgtllc::buildGraph(handNodes(), wider).adjacent(0, 3));
+}
+
+TEST(Graph, HandBuiltPaths) {
+  const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
+  using sgtllc::kBuilding, sgtllc::kFence, sgtllc::kVegetation, sgtllc::kPole;
+  const auto& t0 = g.paths[0];
+  EXPECT_EQ(t0[slot(kFence, kVegetation)].j, 1);
+  EXPECT_EQ(t0[slot(kFence, kVegetation)].k, 2);
+  EXPECT_EQ(t0[slot(kFence, kPole)].j, 1);
+  EXPECT_EQ(t0[slot(kFence, kPole)].k, 3);
+  EXPECT_EQ(t0[slot(kVegetation, kFence)].j, 2);
+  EXPECT_EQ(t0[slot(kVegetation, kFence)].k, 1);
+  EXPECT_FALSE(t0[slot(kFence, kBuilding)].exists());  // only 0→1→0, k = i
+  EXPECT_FALSE(t0[slot(kFence, kFence)].exists());
+  int count = 0;
+  for (const auto& p : t0) count += p.exists();
+  EXPECT_EQ(count, 3);
+  // Node 3 (pole) reaches only node 1.
+  EXPECT_EQ(g.paths[3][slot(kFence, kBuilding)].k, 0);
+  EXPECT_EQ(g.paths[3][slot(kFence, kVegetation)].k, 2);
+  EXPECT_FALSE(g.paths[3][slot(kFence, kPole)].exists());
+  for (const auto& p : g.paths[4]) EXPECT_FALSE(p.exists());
+
+  GraphConfig allow;
+  allow.allow_k_equals_i = true;
+  const auto ga = sgtllc::buildGraph(handNodes(), allow);
+  EXPECT_EQ(ga.paths[0][slot(kFence, kBuilding)].j, 1);
+  EXPECT_EQ(ga.paths[0][slot(kFence, kBuilding)].k, 0);
+  EXPECT_EQ(ga.paths[3][slot(kFence, kPole)].k, 3);
+}
+
+TEST(Graph, HandBuiltTies) {
+  // j tie: 0→1→3 and 0→2→4 are both 5 + √125 long; the lower j wins.
+  const std::vector<Node> jt = {node(0, 0, 0, 0), node(5, 0, 0, 1), node(-5, 0, 0, 1), node(-5, 5, 0, 5),
+                                node(5, 5, 0, 5)};
+  const auto gj = sgtllc::buildGraph(jt, GraphConfig{});
+  EXPECT_EQ(gj.paths[0][slot(1, 5)].j, 1);
+  EXPECT_EQ(gj.paths[0][slot(1, 5)].k, 3);
+  // k tie: from j = 1 the poles 2 and 3 are both 5 m away; the lower k wins.
+  const std::vector<Node> kt = {node(0, 0, 0, 0), node(0, 5, 0, 1), node(3, 9, 0, 5), node(-3, 9, 0, 5)};
+  const auto gk = sgtllc::buildGraph(kt, GraphConfig{});
+  EXPECT_EQ(gk.paths[0][slot(1, 5)].k, 2);
+  EXPECT_EQ(gk.paths[3][slot(1, 5)].k, 2);
+  EXPECT_EQ(gk.paths[2][slot(1, 5)].k, 3);  // k = i is skipped
+}
+
+TEST(Descriptor, HandBuiltSlotValues) {
+  const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
+  sgtllc::DescriptorConfig paper;
+  const auto des = sgtllc::computeLocalDescriptors(g, paper);
+  ASSERT_EQ(des.size(), 5u);
+  const auto& d0 = des[0];
+  // Right triangle i=(0,0,0), j=(3,0,0), k=(0,4,0): a_i = 0, a_j = 9, a_k = 16 (|ij|² = 9, |ik|² = 16, |jk|² = 25).
+  EXPECT_EQ(d0.slots[slot(1, 2)], Eigen::Vector3f(0, 9, 16));
+  // i=(0,0,0), j=(0,4,0), k=(3,0,0): a_i = 0, a_j = 16, a_k = 9.
+  EXPECT_EQ(d0.slots[slot(2, 1)], Eigen::Vector3f(0, 16, 9));
+  // Collinear i=0, j=3, k=30 on the x axis: a_i = 3·30 = 90, a_j = (−3)·27 = −81, a_k = (−30)·(−27) = 810.
+  EXPECT_EQ(d0.slots[slot(1, 5)], Eigen::Vector3f(90, -81, 810));
+  EXPECT_EQ(d0.valid, (uint64_t{1} << slot(1, 2)) | (uint64_t{1} << slot(2, 1)) | (uint64_t{1} << slot(1, 5)));
+  EXPECT_EQ(d0.numValid(), 3);
+  EXPECT_TRUE(d0.isValid(slot(1, 2)));
+  EXPECT_FALSE(d0.isValid(slot(1, 0)));
+  EXPECT_EQ(d0.slots[slot(1, 0)], Eigen::Vector3f::Zero());
+  const auto flat = d0.flat();
+  EXPECT_EQ(flat[3 * slot(1, 2) + 1], 9.0f);
+  EXPECT_EQ(flat[3 * slot(1, 5) + 2], 810.0f);
+  EXPECT_EQ(des[4].valid, 0u);  // isolated
+  EXPECT_EQ(des[4].numValid(), 0);
+  for (float v : des[4].flat()) EXPECT_EQ(v, 0.0f);
+  EXPECT_EQ(des[3].numValid(), 2);
+
+  sgtllc::DescriptorConfig code;
+  code.order = SubVectorOrder::kCode;  // (a_i, a_k, −a_j)
+  const auto dc = sgtllc::computeLocalDescriptors(g, code);
+  EXPECT_EQ(dc[0].slots[slot(1, 2)], Eigen::Vector3f(0, 16, -9));
+  EXPECT_EQ(dc[0].slots[slot(1, 5)], Eigen::Vector3f(90, 810, 81));
+  EXPECT_EQ(dc[0].valid, d0.valid);
+  EXPECT_EQ(sgtllc::slotTerms(dc[0].slots[slot(1, 5)], SubVectorOrder::kCode), Eigen::Vector3d(90, -81, 810));
+  EXPECT_EQ(sgtllc::slotTerms(d0.slots[slot(1, 5)], SubVectorOrder::kPaper), Eigen::Vector3d(90, -81, 810));
+  EXPECT_EQ(sgtllc::vjEntry(SubVectorOrder::kPaper), 1);
+  EXPECT_EQ(sgtllc::vjEntry(SubVectorOrder::kCode), 2);
+}
+
+TEST(Descriptor, KEqualsISlot) {
+  GraphConfig allow;
+  allow.allow_k_equals_i = true;
+  const auto des = sgtllc::computeLocalDescriptors(sgtllc::buildGraph(handNodes(), allow), {});
+  // 0→1→0: a_i = 0, a_j = |ij|² = 9, a_k = 0.
+  EXPECT_TRUE(des[0].isValid(slot(1, 0)));
+  EXPECT_EQ(des[0].slots[slot(1, 0)], Eigen::Vector3f(0, 9, 0));
+  EXPECT_EQ(des[0].numValid(), 5);  // also 0→2→0
+  EXPECT_EQ(sgtllc::triangleTerms({0, 0, 0}, {3, 0, 0}, {0, 0, 0}), Eigen::Vector3d(0, 9, 0));
+}
+
+TEST(GlobalDescriptor, HandBuilt) {
+  // Triangles of handNodes() (i, j, k → a_k, |ik|, |jk|), worked out by hand:
+  //   node 0 (building): (fence, veg) 0→1→2: 16, 4, 5 · (veg, fence) 0→2→1: 9, 3, 5 · (fence, pole) 0→1→3: 810, 30, 27
+  //   node 1 (fence):    (building, veg) 1→0→2: 16, 5, 4 · (veg, building) 1→2→0: 0, 3, 4
+  //   node 2 (veg):      (building, fence) 2→0→1: 9, 5, 3 · (fence, building) 2→1→0: 0, 4, 3
+  //                      (fence, pole) 2→1→3: 810, √916, 27
+  //   node 3 (pole):     (fence, building) 3→1→0: 90, 30, 3 · (fence, veg) 3→1→2: 106, √916, 5
+  const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
+  const auto des = sgtllc::computeLocalDescriptors(g, {});
+  const double r916 = std::sqrt(916.0);
+  const double c2 = 1.0 - 810.0 / (r916 * 27.0), c3 = 1.0 - 106.0 / (r916 * 5.0);
+  sgtllc::DescriptorConfig cfg;
+  // G1: cell 14·o + 7·fuzzy(m) + n, max a_k (cells that only see a_k ≤ 0 stay 0).
+  cfg.global_mode = GlobalMode::kG1;
+  expectCells(sgtllc::computeGlobalDescriptor(g, des, cfg), 98,
+              {{2, 16}, {1, 9}, {5, 810}, {16, 16}, {29, 9}, {33, 810}, {70, 90}, {72, 106}});
+  // G2: cell 49·o + 7·m + n, 1 − cos θ_k.
+  cfg.global_mode = GlobalMode::kG2;
+  expectCells(sgtllc::computeGlobalDescriptor(g, des, cfg), 343,
+              {{9, 0.2}, {15, 0.4}, {51, 0.2}, {63, 1.0}, {99, 0.4}, {105, 1.0}, {110, c2}, {254, c3}});
+  // G3: the G1 cells with the G2 values.
+  cfg.global_mode = GlobalMode::kG3;
+  expectCells(sgtllc::computeGlobalDescriptor(g, des, cfg), 98,
+              {{2, 0.2}, {1, 0.4}, {16, 0.2}, {14, 1.0}, {29, 0.4}, {28, 1.0}, {33, c2}, {72, c3}});
+}
+
+TEST(GlobalDescriptor, DegenerateTriangleNeverUpdates) {
+  // With k = i allowed, 0→1→0 has |ik| = 0: no angle at k, so G2 ignores it; the cell of node 0's (fence, building)
+  // slot stays 0 while a_k = 0 also leaves G1 at 0.
+  GraphConfig allow;
+  allow.allow_k_equals_i = true;
+  const auto g = sgtllc::buildGraph(handNodes(), allow);
+  const auto des = sgtllc::computeLocalDescriptors(g, {});
+  ASSERT_TRUE(des[0].isValid(slot(1, 0)));
+  sgtllc::DescriptorConfig cfg;
+  cfg.global_mode = GlobalMode::kG2;
+  const auto g2 = sgtllc::computeGlobalDescriptor(g, des, cfg);
+  for (float v : g2) EXPECT_TRUE(std::isfinite(v));
+  EXPECT_EQ(g2[slot(1, 0)], 0.0f);
+  EXPECT_EQ(g2[slot(2, 0)], 0.0f);
+}
+
+// --- (b), (c) Random node sets against the brute force -------------------------------------------------------------
+
+TEST(Graph, PathsMatchBruteForceOnRandomNodes) {
+  for (uint32_t seed = 1; seed <= 12; ++seed) {
+    const int n = 5 + static_cast<int>((seed * 37) % 66);  // 5..70
+    SCOPED_TRACE("seed " + std::to_string(seed) + " N " + std::to_string(n));
+    for (bool lattice : {false, true}) {
+      for (bool allow : {false, true}) {
+        GraphConfig cfg;
+        cfg.allow_k_equals_i = allow;
+        expectGraphMatches(randomNodes(seed, n, lattice), cfg);
+      }
+    }
+  }
+}
+
+TEST(Graph, LatticeHasDistancesOfExactlySigmaD) {
+  // Guards the lattice cases above: they do exercise the strict σ_d boundary.
+  int at_sigma = 0;
+  for (uint32_t seed = 1; seed <= 12; ++seed) {
+    const auto nodes = randomNodes(seed, 5 + static_cast<int>((seed * 37) % 66), true);
+    for (size_t a = 0; a < nodes.size(); ++a) {
+      for (size_t b = a + 1; b < nodes.size(); ++b) at_sigma += (nodes[a].centre - nodes[b].centre).norm() == 30.0;
+    }
+  }
+  EXPECT_GT(at_sigma, 0);
+}
+
+TEST(GlobalDescriptor, MatchesBruteForceOnRandomGraph) {
+  for (uint32_t seed : {3u, 8u}) {
+    const auto nodes = randomNodes(seed, 45, false);
+    const RefGraph ref = bruteGraph(nodes, 30.0, false);
+    for (GlobalMode mode : {GlobalMode::kG1, GlobalMode::kG2, GlobalMode::kG3}) {
+      for (SubVectorOrder order : {SubVectorOrder::kPaper, SubVectorOrder::kCode}) {
+        sgtllc::DescriptorConfig cfg;
+        cfg.global_mode = mode;
+        cfg.order = order;
+        const auto frame = sgtllc::describeFrame(nodes, GraphConfig{}, cfg);
+        const std::vector<double> want = bruteGlobal(nodes, ref, mode, order);
+        ASSERT_EQ(static_cast<int>(frame.global.size()), sgtllc::globalDescriptorSize(mode));
+        ASSERT_EQ(frame.global.size(), want.size());
+        int nonzero = 0;
+        for (size_t c = 0; c < want.size(); ++c) {
+          EXPECT_NEAR(frame.global[c], want[c], 2e-5 * std::max(1.0, std::abs(want[c]))) << "cell " << c;
+          nonzero += want[c] != 0.0;
+        }
+        EXPECT_GT(nonzero, 20);
+      }
+    }
+  }
+  EXPECT_EQ(sgtllc::globalDescriptorSize(GlobalMode::kG1), 98);
+  EXPECT_EQ(sgtllc::globalDescriptorSize(GlobalMode::kG2), 343);
+  EXPECT_EQ(sgtllc::globalDescriptorSize(GlobalMode::kG3), 98);
+}
+
+// --- (d) Invariance on the real scan 000052 ------------------------------------------------------------------------
+
+TEST(Invariance, NodeLevelRigidMotion) {
+  const auto nodes = sgtllc::NodeExtractor({}, {}).extract(loadScan52()).nodes;
+  ASSERT_GE(nodes.size(), 15u);
+  std::mt19937 rng(2024);
+  for (int trial = 0; trial < 3; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const auto moved = transformed(nodes, randomRigid(rng, 5.0, 20.0));
+    const auto ga = sgtllc::buildGraph(nodes, {});
+    const auto gb = sgtllc::buildGraph(moved, {});
+    EXPECT_EQ(ga.adjacency, gb.adjacency);
+    for (size_t i = 0; i < nodes.size(); ++i) {
+      for (int s = 0; s < kNumSlots; ++s) {
+        ASSERT_EQ(ga.paths[i][s].j, gb.paths[i][s].j);
+        ASSERT_EQ(ga.paths[i][s].k, gb.paths[i][s].k);
+      }
+    }
+    expectSameDescriptors(nodes, moved);
+  }
+}
+
+TEST(Invariance, PointLevelRigidMotion) {
+  // Moving the points and re-extracting: trunk, pole and sign clusters (not downsampled) come back exactly; the
+  // voxelised classes see a rotated voxel grid, so a cluster may gain or lose voxels or cross its minimum size
+  // (spec §11). So: most nodes must have a counterpart within 2 cm, and the descriptors of the graph made of the
+  // nodes that came back exactly (< 10 µm: float rounding only) must be unchanged.
+  const sgtllc::LabeledCloud scan = loadScan52();
+  const sgtllc::NodeExtractor extractor({}, {});
+  const auto nodes = extractor.extract(scan).nodes;
+  std::mt19937 rng(77);
+  for (int trial = 0; trial < 2; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const Eigen::Isometry3d T = randomRigid(rng, 4.0, 10.0);
+    sgtllc::LabeledCloud moved = scan;
+    for (auto& p : moved.points) p = (T * p.cast<double>()).cast<float>();
+    const auto moved_nodes = extractor.extract(moved).nodes;
+    int within_2cm = 0;
+    std::vector<Node> exact_a, exact_b;
+    for (const Node& nd : nodes) {
+      double best = 1e9;
+      int best_k = -1;
+      for (size_t k = 0; k < moved_nodes.size(); ++k) {
+        const double d = (moved_nodes[k].centre - T * nd.centre).norm();
+        if (moved_nodes[k].label == nd.label && d < best) {
+          best = d;
+          best_k = static_cast<int>(k);
+        }
+      }
+      within_2cm += best < 0.02;
+      if (best < 1e-5) {
+        exact_a.push_back(nd);
+        exact_b.push_back(moved_nodes[best_k]);
+      }
+    }
+    std::cout << "[ point-level ] trial " << trial << ": " << nodes.size() << " nodes, " << moved_nodes.size()
+              << " after the motion, " << within_2cm << " within 2 cm, " << exact_a.size() << " within 10 µm\n";
+    EXPECT_GE(within_2cm, static_cast<int>(std::ceil(0.9 * nodes.size())));
+    EXPECT_GE(within_2cm, static_cast<int>(std::ceil(0.9 * moved_nodes.size())));
+    ASSERT_GE(exact_a.size(), 0.8 * nodes.size());
+    expectSameDescriptors(exact_a, exact_b);
+  }
+}
+
+}  // namespace

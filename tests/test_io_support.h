@@ -1,0 +1,46 @@
+// Shared by the file-format test suites (test_io_*.cpp): a fixture that gives each test its own empty directory.
+#pragma once
+
+#include <unistd.h>
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include <gtest/gtest.h>
+
+namespace sgtllc::test {
+
+/// Gives each test its own empty directory, named after the suite, the test and the pid (so parallel ctest runs
+/// never share one), and removes it afterwards.
+class TempDirTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
+    for (char& ch : name) {
+      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';  // parameterised names hold '/'
+    }
+    dir_ = std::filesystem::path(::testing::TempDir()) / ("sgtllc_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  /// dir_/relative as a string (the file need not exist).
+  std::string path(const std::string& relative) const { return (dir_ / relative).string(); }
+  /// Creates dir_/relative (parent directories included) holding @p bytes; returns its path.
+  std::string write(const std::string& relative, const std::string& bytes = "") const {
+    const std::filesystem::path p = dir_ / relative;
+    std::filesystem::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p.string();
+  }
+  std::filesystem::path dir_;
+};
+
+}  // namespace sgtllc::test
