@@ -93,6 +93,29 @@ TEST_F(Cli, PairJsonHasTheDocumentedKeys) {
   }
 }
 
+TEST_F(Cli, ExportedNodeFilesGiveTheSameResult) {
+  const CliRun r = run("pair --json --export " + path("out") + " " + scan("004501") + " " + scan("000052"), false);
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* f : {"query.ply", "match.ply", "matches.ply", "query_nodes.txt", "match_nodes.txt"}) {
+    EXPECT_TRUE(fs::exists(path("out/") + f)) << f;
+  }
+  std::ifstream ply(path("out/matches.ply"));
+  const std::string text(std::istreambuf_iterator<char>(ply), {});
+  EXPECT_THAT(text, HasSubstr("element vertex 48\n"));  // 25 match + 23 query nodes
+  EXPECT_THAT(text, HasSubstr("element edge 21\n"));    // one per association
+  const CliRun n = run("pair --json " + path("out/query_nodes.txt") + " " + path("out/match_nodes.txt"), false);
+  ASSERT_EQ(n.status, 0) << n.out;
+  const auto a = nlohmann::json::parse(r.out), b = nlohmann::json::parse(n.out);
+  for (const char* key : {"loop", "score", "score_c", "nodes_query", "nodes_match", "associations", "inliers",
+                          "T_match_query"}) {
+    EXPECT_EQ(a[key], b[key]) << key;
+  }
+  // A second export into the same folder keeps the files unless --force.
+  const CliRun again = run("pair --export " + path("out") + " " + scan("004501") + " " + scan("000052"));
+  EXPECT_EQ(again.status, 1);
+  EXPECT_THAT(again.out, HasSubstr("--force"));
+}
+
 TEST_F(Cli, MissingFileIsNamed) {
   const CliRun r = run("pair " + path("nope.bin") + " " + scan("000052"));
   EXPECT_EQ(r.status, 1);

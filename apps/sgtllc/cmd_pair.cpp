@@ -1,11 +1,11 @@
 // `sgtllc pair QUERY MATCH`: is QUERY a revisit of MATCH, and with which pose?
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
 #include "common.h"
+#include "sgtllc/io/nodes.h"
 #include "sgtllc/io/ply.h"
 
 namespace sgtllc::cli {
@@ -39,17 +39,20 @@ std::vector<io::PlyEdge> graphEdges(const std::vector<Node>& nodes, const Config
   return edges;
 }
 
-/// query.ply and match.ply (each graph in its own frame) and matches.ply: the match graph with the query nodes
-/// moved by T_match_query and one edge per association (green inlier, red outlier).
+/// query.ply and match.ply (each graph in its own frame), matches.ply (the match graph with the query nodes moved
+/// by T_match_query and one edge per association: green inlier, red outlier), and both node sets as node files
+/// (query_nodes.txt, match_nodes.txt) that `sgtllc pair` reads back.
 void exportGraphs(const std::string& dir, const PairResult& r, const Config& config, bool force) {
   namespace fs = std::filesystem;
   fs::create_directories(dir);
-  const std::string q = (fs::path(dir) / "query.ply").string();
-  const std::string m = (fs::path(dir) / "match.ply").string();
-  const std::string qm = (fs::path(dir) / "matches.ply").string();
-  for (const auto& path : {q, m, qm}) checkWritable(path, force);
+  const auto in_dir = [&](const char* name) { return (fs::path(dir) / name).string(); };
+  const std::string q = in_dir("query.ply"), m = in_dir("match.ply"), qm = in_dir("matches.ply");
+  const std::string qn = in_dir("query_nodes.txt"), mn = in_dir("match_nodes.txt");
+  for (const auto& path : {q, m, qm, qn, mn}) checkWritable(path, force);
   io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0));
   io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0));
+  io::writeNodesTxt(qn, r.query_nodes);
+  io::writeNodesTxt(mn, r.match_nodes);
 
   std::vector<Node> both = r.match_nodes;
   const int offset = static_cast<int>(both.size());
@@ -68,13 +71,16 @@ void exportGraphs(const std::string& dir, const PairResult& r, const Config& con
   io::writeGraphPly(qm, both, edges);
 }
 
-void printText(const PairOptions& o, const PairResult& r, const LabeledCloud& qc, const LabeledCloud& mc,
+std::string inputSummary(const FrameNodes& f) {
+  const std::string nodes = std::to_string(f.nodes.size()) + " nodes";
+  return f.from_node_file ? "node file, " + nodes : std::to_string(f.points) + " points, " + nodes;
+}
+
+void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, const FrameNodes& mt,
                const Config& config, double load_ms) {
   const MatchResult& m = r.match;
-  std::cout << "query  " << o.query << "  (" << qc.points.size() << " points, " << r.query_nodes.size()
-            << " nodes)\n"
-            << "match  " << o.match << "  (" << mc.points.size() << " points, " << r.match_nodes.size()
-            << " nodes)\n";
+  std::cout << "query  " << o.query << "  (" << inputSummary(q) << ")\n"
+            << "match  " << o.match << "  (" << inputSummary(mt) << ")\n";
   std::cout << "loop: " << (r.is_loop ? "YES" : "no") << "   score_t " << fixed(m.score_t, 3)
             << (r.is_loop ? " > " : " <= ") << "sigma_4 " << config.verification.sigma_4 << "   score_c "
             << fixed(m.score_c, 3) << "\n";
@@ -121,18 +127,20 @@ void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
 
 void runPair(const PairOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
-  const auto start = std::chrono::steady_clock::now();
-  const LabeledCloud qc = loadScan(o.query, o.labels_query, o.label_field);
-  const LabeledCloud mc = loadScan(o.match, o.labels_match, o.label_field);
-  const double load_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const PairResult r = comparePair(qc, mc, config);
-  warnAboutInput(o.query, r.extraction_query, static_cast<int>(r.query_nodes.size()));
-  warnAboutInput(o.match, r.extraction_match, static_cast<int>(r.match_nodes.size()));
+  FrameNodes q = loadFrameNodes(o.query, o.labels_query, o.label_field, config);
+  FrameNodes mt = loadFrameNodes(o.match, o.labels_match, o.label_field, config);
+  for (const auto& [name, f] : {std::pair<const std::string&, const FrameNodes&>{o.query, q}, {o.match, mt}}) {
+    warnAboutInput(name, f.stats, static_cast<int>(f.nodes.size()), f.from_node_file ? "node rows" : "points");
+  }
+  PairResult r = comparePair(q.nodes, mt.nodes, config);
+  r.extraction_query = q.stats;
+  r.extraction_match = mt.stats;
+  r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
+  const double load_ms = q.load_ms + mt.load_ms;
   if (o.json) {
     printJson(o, r, load_ms);
   } else {
-    printText(o, r, qc, mc, config, load_ms);
+    printText(o, r, q, mt, config, load_ms);
   }
   if (!o.export_dir.empty()) exportGraphs(o.export_dir, r, config, o.force);
 }
@@ -142,7 +150,8 @@ void runPair(const PairOptions& o) {
 void addPairCommand(CLI::App& app) {
   auto o = std::make_shared<PairOptions>();
   CLI::App* cmd = app.add_subcommand("pair", "Compare two scans: loop or not, scores and the 6-DoF pose");
-  cmd->add_option("QUERY", o->query, "query scan (.bin with labels, or .pcd with a label field)")->required();
+  cmd->add_option("QUERY", o->query, "query scan (.bin with labels, .pcd with a label field) or node file (.txt)")
+      ->required();
   cmd->add_option("MATCH", o->match, "candidate scan it may revisit")->required();
   cmd->add_option("--labels-query", o->labels_query,
                   "labels of QUERY (default: ../labels/NAME.label beside velodyne/NAME.bin, else NAME.label)");
@@ -150,7 +159,8 @@ void addPairCommand(CLI::App& app) {
   cmd->add_option("--label-field", o->label_field, "PCD field holding the per-point label")->capture_default_str();
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
   cmd->add_flag("--json", o->json, "print one JSON object");
-  cmd->add_option("--export", o->export_dir, "write query.ply, match.ply and matches.ply (graphs) to this folder");
+  cmd->add_option("--export", o->export_dir,
+                  "write the graphs (query.ply, match.ply, matches.ply) and the nodes (*_nodes.txt) to this folder");
   cmd->add_flag("--force", o->force, "overwrite existing export files");
   cmd->callback([o] { runPair(*o); });
 }

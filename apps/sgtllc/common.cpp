@@ -9,6 +9,7 @@
 
 #include "sgtllc/io/config_yaml.h"
 #include "sgtllc/io/kitti.h"
+#include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
 
 namespace fs = std::filesystem;
@@ -22,14 +23,48 @@ Config loadConfigOption(const std::string& path, int threads) {
   return config;
 }
 
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".pcd") {
     if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");
     return io::readPcd(path, label_field);
   }
-  if (ext != ".bin") throw Error(path + ": unknown scan format '" + ext + "' (expected a KITTI .bin or a .pcd)");
+  if (ext != ".bin") {
+    throw Error(path + ": unknown input format '" + ext + "' (expected a KITTI .bin, a .pcd or a .txt node file)");
+  }
   return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path);
+}
+
+}  // namespace
+
+FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path, const std::string& label_field,
+                          const Config& config) {
+  FrameNodes f;
+  auto start = std::chrono::steady_clock::now();
+  if (fs::path(path).extension() == ".txt") {
+    if (!label_path.empty()) throw Error(path + ": a node file carries its labels; drop the separate label file");
+    io::NodeFileStats stats;
+    f.nodes = io::readNodesTxt(path, LabelMap(config.labels), &stats);
+    f.from_node_file = true;
+    f.stats.unknown_label_points = stats.unknown;
+    f.load_ms = msSince(start);
+    return f;
+  }
+  const LabeledCloud cloud = loadScan(path, label_path, label_field);
+  f.points = cloud.points.size();
+  f.load_ms = msSince(start);
+  start = std::chrono::steady_clock::now();
+  NodeExtractionResult extracted = NodeExtractor(config.cluster, config.labels).extract(cloud);
+  f.extraction_ms = msSince(start);
+  f.nodes = std::move(extracted.nodes);
+  f.stats = extracted.stats;
+  return f;
 }
 
 void checkWritable(const std::string& path, bool force) {
@@ -55,14 +90,14 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
   }
 }
 
-void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes) {
+void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes, const char* unit) {
   if (stats.nonfinite_points > 0) {
     std::cerr << "warning: " << name << ": dropped " << stats.nonfinite_points
               << " points with NaN or Inf coordinates\n";
   }
   if (stats.unknown_label_points > 0) {
     std::cerr << "warning: " << name << ": ignored " << stats.unknown_label_points
-              << " points whose label id is not in the configured label set (labels.preset)\n";
+              << " " << unit << " whose label id is not in the configured label set (labels.preset)\n";
   }
   if (num_nodes == 0) {
     std::cerr << "warning: " << name << ": no graph nodes (no clusters of the 7 stable classes); it cannot be a loop\n";

@@ -24,8 +24,20 @@ inline constexpr int kExitUsage = 2;
 /// Configuration from --config (or the defaults), with --threads applied if given (> 0).
 Config loadConfigOption(const std::string& path, int threads);
 
-/// A scan from a KITTI .bin (labels from @p label_path or the SemanticKITTI default) or a PCD with a label field.
-LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field);
+/// One input frame reduced to graph nodes.
+struct FrameNodes {
+  std::vector<Node> nodes;
+  bool from_node_file = false;  ///< read from a node file instead of extracted from points
+  size_t points = 0;            ///< points of the scan (0 for a node file)
+  ExtractionStats stats;        ///< point bookkeeping (a node file's unknown ids count as unknown_label_points)
+  double load_ms = 0.0;
+  double extraction_ms = 0.0;
+};
+
+/// Nodes of a KITTI .bin scan (labels from @p label_path or the SemanticKITTI default), a PCD with a label field,
+/// or a node file (.txt: one `x y z label` row per node, label a raw id mapped by config.labels).
+FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path, const std::string& label_field,
+                          const Config& config);
 
 /// Refuses to overwrite an existing file unless @p force: nothing a user gave us is overwritten by accident.
 void checkWritable(const std::string& path, bool force);
@@ -33,8 +45,10 @@ void checkWritable(const std::string& path, bool force);
 /// Writes @p text to @p path via a temporary file and a rename, so a failure never leaves half a file.
 void writeFileAtomically(const std::string& path, const std::string& text);
 
-/// Warnings about dropped points (non-finite coordinates, unknown ids, no nodes) on stderr.
-void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes);
+/// Warnings about dropped points (non-finite coordinates, unknown ids, no nodes) on stderr; @p unit names what
+/// carried the unknown ids ("points", or "node rows" for a node file).
+void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes,
+                    const char* unit = "points");
 
 Json matrixJson(const Eigen::Matrix4d& T);
 std::string matrixText(const Eigen::Matrix4d& T, const std::string& indent);
