@@ -1,11 +1,12 @@
-// Graph (spec §3), local descriptors (§4) and global descriptors (§5): hand-computed graphs, brute-force path and
-// pooling references on random node sets, and rigid-motion invariance on a real KITTI scan.
+// Local descriptors (spec §4) and global descriptors (§5): hand-computed slot values and cells, brute-force pooling
+// references on random node sets, and rigid-motion invariance on a real KITTI scan.
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -14,21 +15,20 @@
 #include "sgtllc/frame.h"
 #include "sgtllc/global_descriptor.h"
 #include "sgtllc/graph.h"
-#include "sgtllc/io/kitti.h"
 #include "sgtllc/node_extraction.h"
+#include "test_graph_support.h"
+#include "test_support.h"
 
 namespace {
 
 using sgtllc::GlobalMode;
 using sgtllc::GraphConfig;
-using sgtllc::kNumClasses;
 using sgtllc::kNumSlots;
 using sgtllc::Node;
 using sgtllc::SubVectorOrder;
+using namespace sgtllc::test;  // test_graph_support.h, test_support.h
 
-constexpr int slot(int m, int n) { return kNumClasses * m + n; }
-
-Node node(double x, double y, double z, int label) { return Node{Eigen::Vector3d(x, y, z), label}; }
+// --- Rigid motions -------------------------------------------------------------------------------------------------
 
 std::vector<Node> transformed(const std::vector<Node>& nodes, const Eigen::Isometry3d& T) {
   std::vector<Node> out = nodes;
@@ -50,55 +50,6 @@ Eigen::Isometry3d randomRigid(std::mt19937& rng, double max_tilt_deg, double max
 }
 
 // --- Brute-force references ----------------------------------------------------------------------------------------
-
-struct RefGraph {
-  std::vector<std::vector<bool>> adj;
-  std::vector<bool> isolated;
-  std::vector<std::array<std::pair<int, int>, kNumSlots>> paths;  ///< (j, k) or (−1, −1)
-};
-
-double dist(const std::vector<Node>& nodes, int a, int b) { return (nodes[a].centre - nodes[b].centre).norm(); }
-
-/// O(N³) path search straight from spec §3: lowest j, then lowest k, wins a tie (strict >).
-RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool allow_k_equals_i) {
-  const int n = static_cast<int>(nodes.size());
-  RefGraph g;
-  g.adj.assign(n, std::vector<bool>(n, false));
-  g.isolated.assign(n, true);
-  for (int a = 0; a < n; ++a) {
-    for (int b = 0; b < n; ++b) {
-      g.adj[a][b] = a != b && dist(nodes, a, b) < sigma_d;
-      if (g.adj[a][b]) g.isolated[a] = false;
-    }
-  }
-  g.paths.resize(n);
-  for (int i = 0; i < n; ++i) {
-    for (int m = 0; m < kNumClasses; ++m) {
-      for (int c = 0; c < kNumClasses; ++c) {
-        std::pair<int, int> best(-1, -1);
-        double best_len = -1.0;
-        for (int j = 0; j < n; ++j) {
-          if (!g.adj[i][j] || nodes[j].label != m) continue;
-          for (int k = 0; k < n; ++k) {
-            if (!g.adj[j][k] || nodes[k].label != c || (k == i && !allow_k_equals_i)) continue;
-            const double len = dist(nodes, i, j) + dist(nodes, j, k);
-            if (len > best_len) {
-              best_len = len;
-              best = {j, k};
-            }
-          }
-        }
-        g.paths[i][slot(m, c)] = best;
-      }
-    }
-  }
-  return g;
-}
-
-/// (a_i, a_j, a_k) written out from the definition (spec §4).
-Eigen::Vector3d terms(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& pk) {
-  return {(pj - pi).dot(pk - pi), (pi - pj).dot(pk - pj), (pi - pk).dot(pj - pk)};
-}
 
 /// Des^G from spec §5 / global_descriptor.h with the reference paths, in double. G1 pools the stored entry [2]:
 /// a_k in the paper order, −a_j in the code order.
@@ -122,27 +73,7 @@ std::vector<double> bruteGlobal(const std::vector<Node>& nodes, const RefGraph& 
   return des;
 }
 
-std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> xy(0.0, 80.0), z(0.0, 4.0);
-  std::uniform_int_distribution<int> label(0, kNumClasses - 1), grid(0, 40);
-  std::vector<Node> nodes(n);
-  for (Node& nd : nodes) {
-    // Lattice nodes tie often (equal path lengths, distances of exactly σ_d = 30 m).
-    nd.centre = lattice ? Eigen::Vector3d(grid(rng), grid(rng), 0.0) : Eigen::Vector3d(xy(rng), xy(rng), z(rng));
-    nd.label = label(rng);
-  }
-  return nodes;
-}
-
 // --- Checks shared by the tests ------------------------------------------------------------------------------------
-
-/// 0 building (0,0,0), 1 fence (3,0,0), 2 vegetation (0,4,0): a 3-4-5 right triangle; 3 pole at (30,0,0), exactly
-/// σ_d from node 0 (not adjacent), 27 m from node 1; 4 trunk far away (isolated).
-std::vector<Node> handNodes() {
-  return {node(0, 0, 0, sgtllc::kBuilding), node(3, 0, 0, sgtllc::kFence), node(0, 4, 0, sgtllc::kVegetation),
-          node(30, 0, 0, sgtllc::kPole), node(100, 0, 0, sgtllc::kTrunk)};
-}
 
 /// Checks a whole descriptor: the listed cells hold the given values, every other cell is 0.
 void expectCells(const std::vector<float>& des, size_t size, const std::map<int, double>& cells) {
@@ -153,36 +84,8 @@ void expectCells(const std::vector<float>& des, size_t size, const std::map<int,
   }
 }
 
-void expectGraphMatches(const std::vector<Node>& nodes, const GraphConfig& cfg) {
-  const auto g = sgtllc::buildGraph(nodes, cfg);
-  const RefGraph ref = bruteGraph(nodes, cfg.sigma_d, cfg.allow_k_equals_i);
-  const int n = static_cast<int>(nodes.size());
-  ASSERT_EQ(g.size(), n);
-  for (int a = 0; a < n; ++a) {
-    ASSERT_EQ(g.isolated[a] != 0, ref.isolated[a]) << "node " << a;
-    for (int b = 0; b < n; ++b) ASSERT_EQ(g.adjacent(a, b), ref.adj[a][b]) << a << "," << b;
-    for (int s = 0; s < kNumSlots; ++s) {
-      ASSERT_EQ(std::make_pair(g.paths[a][s].j, g.paths[a][s].k), ref.paths[a][s]) << "node " << a << " slot " << s;
-    }
-  }
-  // Local descriptors follow the reference paths (paper order).
-  const auto des = sgtllc::computeLocalDescriptors(g, {});
-  for (int i = 0; i < n; ++i) {
-    for (int s = 0; s < kNumSlots; ++s) {
-      const auto [j, k] = ref.paths[i][s];
-      ASSERT_EQ(des[i].isValid(s), j >= 0);
-      const Eigen::Vector3f want =
-          j < 0 ? Eigen::Vector3f::Zero()
-                : terms(nodes[i].centre, nodes[j].centre, nodes[k].centre).cast<float>().eval();
-      ASSERT_EQ(des[i].slots[s], want) << "node " << i << " slot " << s;
-    }
-  }
-}
-
-sgtllc::LabeledCloud loadScan52() {
-  const std::string dir = std::string(SGTLLC_DATA_DIR) + "/kitti/00/";
-  return sgtllc::io::readLabeledScan(dir + "velodyne/000052.bin", dir + "labels/000052.label");
-}
+/// The bundled scan 000052 (data/kitti/00).
+sgtllc::LabeledCloud loadScan52() { return kittiScan("000052"); }
 
 /// Local descriptors (slot by slot, relative 1e-4) and all three global descriptors of two node sets agree; node i
 /// of @p a corresponds to node i of @p b.
@@ -208,67 +111,7 @@ void expectSameDescriptors(const std::vector<Node>& a, const std::vector<Node>& 
   }
 }
 
-// --- (a) Hand-built graphs -----------------------------------------------------------------------------------------
-
-TEST(Graph, HandBuiltAdjacency) {
-  const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
-  ASSERT_EQ(g.size(), 5);
-  EXPECT_EQ(g.edges(), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}, {1, 3}}));
-  EXPECT_DOUBLE_EQ(g.distance(0, 3), 30.0);
-  EXPECT_FALSE(g.adjacent(0, 3));  // exactly σ_d: strict <
-  EXPECT_FALSE(g.adjacent(3, 0));
-  EXPECT_TRUE(g.adjacent(3, 1));
-  EXPECT_FALSE(g.adjacent(2, 2));
-  EXPECT_DOUBLE_EQ(g.distance(1, 2), 5.0);
-  EXPECT_EQ(g.isolated, (std::vector<uint8_t>{0, 0, 0, 0, 1}));
-  GraphConfig wider;
-  wider.sigma_d = 30.000001;
-  EXPECT_TRUE(sgtllc::buildGraph(handNodes(), wider).adjacent(0, 3));
-}
-
-TEST(Graph, HandBuiltPaths) {
-  const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
-  using sgtllc::kBuilding, sgtllc::kFence, sgtllc::kVegetation, sgtllc::kPole;
-  const auto& t0 = g.paths[0];
-  EXPECT_EQ(t0[slot(kFence, kVegetation)].j, 1);
-  EXPECT_EQ(t0[slot(kFence, kVegetation)].k, 2);
-  EXPECT_EQ(t0[slot(kFence, kPole)].j, 1);
-  EXPECT_EQ(t0[slot(kFence, kPole)].k, 3);
-  EXPECT_EQ(t0[slot(kVegetation, kFence)].j, 2);
-  EXPECT_EQ(t0[slot(kVegetation, kFence)].k, 1);
-  EXPECT_FALSE(t0[slot(kFence, kBuilding)].exists());  // only 0→1→0, k = i
-  EXPECT_FALSE(t0[slot(kFence, kFence)].exists());
-  int count = 0;
-  for (const auto& p : t0) count += p.exists();
-  EXPECT_EQ(count, 3);
-  // Node 3 (pole) reaches only node 1.
-  EXPECT_EQ(g.paths[3][slot(kFence, kBuilding)].k, 0);
-  EXPECT_EQ(g.paths[3][slot(kFence, kVegetation)].k, 2);
-  EXPECT_FALSE(g.paths[3][slot(kFence, kPole)].exists());
-  for (const auto& p : g.paths[4]) EXPECT_FALSE(p.exists());
-
-  GraphConfig allow;
-  allow.allow_k_equals_i = true;
-  const auto ga = sgtllc::buildGraph(handNodes(), allow);
-  EXPECT_EQ(ga.paths[0][slot(kFence, kBuilding)].j, 1);
-  EXPECT_EQ(ga.paths[0][slot(kFence, kBuilding)].k, 0);
-  EXPECT_EQ(ga.paths[3][slot(kFence, kPole)].k, 3);
-}
-
-TEST(Graph, HandBuiltTies) {
-  // j tie: 0→1→3 and 0→2→4 are both 5 + √125 long; the lower j wins.
-  const std::vector<Node> jt = {node(0, 0, 0, 0), node(5, 0, 0, 1), node(-5, 0, 0, 1), node(-5, 5, 0, 5),
-                                node(5, 5, 0, 5)};
-  const auto gj = sgtllc::buildGraph(jt, GraphConfig{});
-  EXPECT_EQ(gj.paths[0][slot(1, 5)].j, 1);
-  EXPECT_EQ(gj.paths[0][slot(1, 5)].k, 3);
-  // k tie: from j = 1 the poles 2 and 3 are both 5 m away; the lower k wins.
-  const std::vector<Node> kt = {node(0, 0, 0, 0), node(0, 5, 0, 1), node(3, 9, 0, 5), node(-3, 9, 0, 5)};
-  const auto gk = sgtllc::buildGraph(kt, GraphConfig{});
-  EXPECT_EQ(gk.paths[0][slot(1, 5)].k, 2);
-  EXPECT_EQ(gk.paths[3][slot(1, 5)].k, 2);
-  EXPECT_EQ(gk.paths[2][slot(1, 5)].k, 3);  // k = i is skipped
-}
+// --- (a) Hand-built node set ---------------------------------------------------------------------------------------
 
 TEST(Descriptor, HandBuiltSlotValues) {
   const auto g = sgtllc::buildGraph(handNodes(), GraphConfig{});
@@ -360,33 +203,7 @@ TEST(GlobalDescriptor, DegenerateTriangleNeverUpdates) {
   EXPECT_EQ(g2[slot(2, 0)], 0.0f);
 }
 
-// --- (b), (c) Random node sets against the brute force -------------------------------------------------------------
-
-TEST(Graph, PathsMatchBruteForceOnRandomNodes) {
-  for (uint32_t seed = 1; seed <= 12; ++seed) {
-    const int n = 5 + static_cast<int>((seed * 37) % 66);  // 5..70
-    SCOPED_TRACE("seed " + std::to_string(seed) + " N " + std::to_string(n));
-    for (bool lattice : {false, true}) {
-      for (bool allow : {false, true}) {
-        GraphConfig cfg;
-        cfg.allow_k_equals_i = allow;
-        expectGraphMatches(randomNodes(seed, n, lattice), cfg);
-      }
-    }
-  }
-}
-
-TEST(Graph, LatticeHasDistancesOfExactlySigmaD) {
-  // Guards the lattice cases above: they do exercise the strict σ_d boundary.
-  int at_sigma = 0;
-  for (uint32_t seed = 1; seed <= 12; ++seed) {
-    const auto nodes = randomNodes(seed, 5 + static_cast<int>((seed * 37) % 66), true);
-    for (size_t a = 0; a < nodes.size(); ++a) {
-      for (size_t b = a + 1; b < nodes.size(); ++b) at_sigma += (nodes[a].centre - nodes[b].centre).norm() == 30.0;
-    }
-  }
-  EXPECT_GT(at_sigma, 0);
-}
+// --- (b) Random node sets against the brute force ------------------------------------------------------------------
 
 TEST(GlobalDescriptor, MatchesBruteForceOnRandomGraph) {
   for (uint32_t seed : {3u, 8u}) {
@@ -415,7 +232,7 @@ TEST(GlobalDescriptor, MatchesBruteForceOnRandomGraph) {
   EXPECT_EQ(sgtllc::globalDescriptorSize(GlobalMode::kG3), 98);
 }
 
-// --- (d) Invariance on the real scan 000052 ------------------------------------------------------------------------
+// --- (c) Invariance on the real scan 000052 ------------------------------------------------------------------------
 
 TEST(Invariance, NodeLevelRigidMotion) {
   const auto nodes = sgtllc::NodeExtractor({}, {}).extract(loadScan52()).nodes;

@@ -1,0 +1,205 @@
+// Node extraction (spec §1–§2): class filtering, per-class minimum sizes, node centres and order, same-class
+// duplicate suppression and bookkeeping, on synthetic labelled clouds.
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sgtllc/node_extraction.h"
+#include "test_clustering_support.h"
+
+namespace {
+
+using sgtllc::LabeledCloud;
+using sgtllc::NodeExtractor;
+using namespace sgtllc::test;  // test_clustering_support.h
+
+// --- Synthetic labelled clouds -------------------------------------------------------------------------------------
+
+/// Appends an nu × nv grid of points spaced 0.2 m, starting 0.1 m into the voxel at @p origin along @p u and @p v
+/// (so with a 0.4 m leaf every voxel holds 2 × 2 points and no point lies on a voxel face). Returns its points.
+Cloud addGrid(LabeledCloud* cloud, uint32_t label, const Eigen::Vector3f& origin, const Eigen::Vector3f& u,
+              const Eigen::Vector3f& v, int nu, int nv) {
+  Cloud pts;
+  for (int a = 0; a < nu; ++a) {
+    for (int b = 0; b < nv; ++b) pts.push_back(origin + (0.1f + 0.2f * a) * u + (0.1f + 0.2f * b) * v);
+  }
+  cloud->points.insert(cloud->points.end(), pts.begin(), pts.end());
+  cloud->labels.insert(cloud->labels.end(), pts.size(), label);
+  return pts;
+}
+
+/// Appends @p n points on a horizontal ring (or a vertical segment when radius is 0).
+Cloud addRing(LabeledCloud* cloud, uint32_t label, const Eigen::Vector3f& centre, float radius, int n) {
+  Cloud pts;
+  for (int k = 0; k < n; ++k) {
+    const float a = 2.0f * static_cast<float>(M_PI) * static_cast<float>(k) / static_cast<float>(n);
+    pts.push_back(radius > 0 ? centre + Eigen::Vector3f(radius * std::cos(a), radius * std::sin(a), 0.0f)
+                             : centre + Eigen::Vector3f(0.0f, 0.0f, 0.1f * static_cast<float>(k)));
+  }
+  cloud->points.insert(cloud->points.end(), pts.begin(), pts.end());
+  cloud->labels.insert(cloud->labels.end(), pts.size(), label);
+  return pts;
+}
+
+Eigen::Vector3d mean(const Cloud& pts) {
+  Eigen::Vector3d s = Eigen::Vector3d::Zero();
+  for (const auto& p : pts) s += p.cast<double>();
+  return s / static_cast<double>(pts.size());
+}
+
+const Eigen::Vector3f kX = Eigen::Vector3f::UnitX(), kY = Eigen::Vector3f::UnitY(), kZ = Eigen::Vector3f::UnitZ();
+
+sgtllc::NodeExtractionResult extract(const LabeledCloud& cloud, const sgtllc::ClusterConfig& config = {}) {
+  return NodeExtractor(config, sgtllc::LabelConfig{}).extract(cloud);
+}
+
+// --- NodeExtractor -------------------------------------------------------------------------------------------------
+
+TEST(NodeExtractor, TwoBuildingBlobsWithBookkeeping) {
+  LabeledCloud cloud;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  // Wall B comes first in the cloud, so it is the first cluster and the first node. 50 × 20 points = 250 voxels.
+  const Cloud wall_b = addGrid(&cloud, 50, {20.0f, -6.0f, 0.0f}, kX, kZ, 50, 20);
+  cloud.points.insert(cloud.points.end(), {{nan, 0, 0}, {0, inf, 0}, {1, 2, -inf}});
+  cloud.labels.insert(cloud.labels.end(), {50, 50, 70});
+  addGrid(&cloud, 40, {0.0f, 0.0f, -2.0f}, kX, kY, 40, 40);  // road: dropped, not counted anywhere
+  cloud.points.insert(cloud.points.end(), 4, Eigen::Vector3f(1, 1, 1));
+  cloud.labels.insert(cloud.labels.end(), {12345, 2, 12345, 2});  // unknown ids
+  const Cloud wall_a = addGrid(&cloud, (7u << 16) | 50u, {0.0f, 10.0f, 0.0f}, kX, kZ, 50, 20);
+  addRing(&cloud, 80, {5.0f, 5.0f, 0.0f}, 0.0f, 19);  // a pole one point short of min_size 20
+
+  const auto result = extract(cloud);
+  ASSERT_EQ(result.nodes.size(), 2u);
+  EXPECT_EQ(result.nodes[0].label, sgtllc::kBuilding);
+  EXPECT_EQ(result.nodes[1].label, sgtllc::kBuilding);
+  EXPECT_LT((result.nodes[0].centre - mean(wall_b)).norm(), 1e-9);
+  EXPECT_LT((result.nodes[1].centre - mean(wall_a)).norm(), 1e-9);
+
+  const auto& st = result.stats;
+  EXPECT_EQ(st.input_points, cloud.points.size());
+  EXPECT_EQ(st.nonfinite_points, 3u);
+  EXPECT_EQ(st.unknown_label_points, 4u);
+  EXPECT_EQ(st.class_points[sgtllc::kBuilding], 2000u);
+  EXPECT_EQ(st.class_points[sgtllc::kPole], 19u);
+  for (int c : {1, 2, 3, 4, 6}) EXPECT_EQ(st.class_points[c], 0u) << c;
+  EXPECT_EQ(st.clusters[sgtllc::kBuilding], 2);
+  EXPECT_EQ(st.clusters[sgtllc::kPole], 0);
+  EXPECT_EQ(st.duplicates_suppressed, 0);
+}
+
+TEST(NodeExtractor, MinSizeCountsVoxelsOrPoints) {
+  // Building: 40 × 20 grid = 200 voxels (kept); 38 × 20 = 190 voxels of 760 points (dropped: voxels count).
+  LabeledCloud cloud;
+  addGrid(&cloud, 50, {0, 0, 0}, kX, kZ, 40, 20);
+  addGrid(&cloud, 50, {0, 20, 0}, kX, kZ, 38, 20);
+  // Poles (not downsampled): 20 points kept, 19 dropped.
+  const Cloud pole20 = addRing(&cloud, 80, {30, 0, 0}, 0.0f, 20);
+  addRing(&cloud, 80, {30, 20, 0}, 0.0f, 19);
+  const auto result = extract(cloud);
+  ASSERT_EQ(result.nodes.size(), 2u);
+  EXPECT_EQ(result.nodes[0].label, sgtllc::kBuilding);
+  EXPECT_NEAR(result.nodes[0].centre.y(), 0.0, 1e-6);
+  EXPECT_EQ(result.nodes[1].label, sgtllc::kPole);
+  EXPECT_LT((result.nodes[1].centre - mean(pole20)).norm(), 1e-9);
+  EXPECT_EQ(result.stats.clusters[sgtllc::kBuilding], 1);
+  EXPECT_EQ(result.stats.clusters[sgtllc::kPole], 1);
+}
+
+TEST(NodeExtractor, NodeOrderIsClassOrder) {
+  // Classes appear in the cloud in reverse order; nodes must come out building … traffic-sign.
+  LabeledCloud cloud;
+  std::vector<Cloud> by_class(sgtllc::kNumClasses);
+  by_class[6] = addGrid(&cloud, 81, {60, 0, 2}, kX, kZ, 5, 5);            // traffic-sign, 25 points
+  by_class[5] = addRing(&cloud, 80, {50, 0, 0}, 0.0f, 25);               // pole
+  by_class[4] = addGrid(&cloud, 72, {0, 30, -1.8f}, kX, kY, 40, 40);     // terrain, 400 voxels
+  by_class[3] = addRing(&cloud, 71, {40, 0, 0}, 0.0f, 25);               // trunk
+  by_class[2] = addGrid(&cloud, 70, {0, -20, 0}, kX, kZ, 40, 20);        // vegetation, 200 voxels
+  by_class[1] = addGrid(&cloud, 51, {0, 10, 0}, kX, kZ, 50, 2);          // fence, 25 voxels
+  by_class[0] = addGrid(&cloud, 50, {0, 0, 0}, kX, kZ, 50, 20);          // building, 250 voxels
+  const auto result = extract(cloud);
+  ASSERT_EQ(result.nodes.size(), 7u);
+  for (int c = 0; c < sgtllc::kNumClasses; ++c) {
+    EXPECT_EQ(result.nodes[c].label, c);
+    EXPECT_LT((result.nodes[c].centre - mean(by_class[c])).norm(), 1e-9) << sgtllc::kClassNames[c];
+    EXPECT_EQ(result.stats.class_points[c], by_class[c].size());
+    EXPECT_EQ(result.stats.clusters[c], 1);
+  }
+}
+
+TEST(NodeExtractor, CentreSourcePointsOrVoxels) {
+  // A wall plus 300 extra points packed into its first voxel: the point mean moves, the voxel mean barely does.
+  LabeledCloud cloud;
+  Cloud all = addGrid(&cloud, 50, {0, 0, 0}, kX, kZ, 50, 20);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.05f, 0.35f);
+  for (int k = 0; k < 300; ++k) {
+    all.emplace_back(u(rng), 0.0f, u(rng));
+    cloud.points.push_back(all.back());
+    cloud.labels.push_back(50);
+  }
+  sgtllc::ClusterConfig config;
+  config.centre = sgtllc::CentreSource::kPoints;
+  const auto by_points = extract(cloud, config);
+  config.centre = sgtllc::CentreSource::kVoxels;
+  const auto by_voxels = extract(cloud, config);
+  ASSERT_EQ(by_points.nodes.size(), 1u);
+  ASSERT_EQ(by_voxels.nodes.size(), 1u);
+  EXPECT_LT((by_points.nodes[0].centre - mean(all)).norm(), 1e-9);
+  const RefVoxels ref = voxelReference(all, 0.4);
+  Eigen::Vector3d voxel_mean = Eigen::Vector3d::Zero();
+  for (size_t v = 0; v < ref.sums.size(); ++v) voxel_mean += ref.sums[v] / ref.counts[v];
+  voxel_mean /= static_cast<double>(ref.sums.size());
+  EXPECT_LT((by_voxels.nodes[0].centre - voxel_mean).norm(), 1e-5);
+  EXPECT_GT((by_points.nodes[0].centre - by_voxels.nodes[0].centre).norm(), 0.5);
+}
+
+TEST(NodeExtractor, SameClassDuplicatesSuppressed) {
+  // Concentric trunk rings (r = 0.3 m and 1.6 m: 1.3 m apart, so two FEC clusters) share a centre; the second
+  // (outer) cluster is suppressed. A pole at the same place is another class and stays.
+  LabeledCloud cloud;
+  const Cloud inner = addRing(&cloud, 71, {5, 5, 0}, 0.3f, 20);
+  addRing(&cloud, 71, {5, 5, 0}, 1.6f, 40);
+  const Cloud pole = addRing(&cloud, 80, {5, 5, -0.5f}, 0.0f, 20);
+  const auto result = extract(cloud);
+  ASSERT_EQ(result.nodes.size(), 2u);
+  EXPECT_EQ(result.nodes[0].label, sgtllc::kTrunk);
+  EXPECT_LT((result.nodes[0].centre - mean(inner)).norm(), 1e-9);
+  EXPECT_EQ(result.nodes[1].label, sgtllc::kPole);
+  EXPECT_LT((result.nodes[1].centre - mean(pole)).norm(), 1e-9);
+  EXPECT_EQ(result.stats.clusters[sgtllc::kTrunk], 2);
+  EXPECT_EQ(result.stats.duplicates_suppressed, 1);
+}
+
+TEST(NodeExtractor, DuplicateRadiusIsConfigurable) {
+  // Rings whose centres are 0.8 m apart (r = 0.3 m at x = 5, r = 2.5 m at x = 5.8; ≥ 1.4 m apart, not connected).
+  LabeledCloud cloud;
+  const Cloud inner = addRing(&cloud, 71, {5, 5, 0}, 0.3f, 20);
+  const Cloud outer = addRing(&cloud, 71, {5.8f, 5, 0}, 2.5f, 64);
+  sgtllc::ClusterConfig config;
+  const auto suppressed = extract(cloud, config);  // duplicate_radius 1.0 m
+  ASSERT_EQ(suppressed.nodes.size(), 1u);
+  EXPECT_LT((suppressed.nodes[0].centre - mean(inner)).norm(), 1e-9);
+  EXPECT_EQ(suppressed.stats.duplicates_suppressed, 1);
+  config.duplicate_radius = 0.5;
+  const auto kept = extract(cloud, config);
+  ASSERT_EQ(kept.nodes.size(), 2u);
+  EXPECT_LT((kept.nodes[1].centre - mean(outer)).norm(), 1e-9);
+  EXPECT_EQ(kept.stats.duplicates_suppressed, 0);
+}
+
+TEST(NodeExtractor, MismatchedLengthsThrowAndEmptyCloudGivesNoNodes) {
+  LabeledCloud cloud;
+  cloud.points.assign(3, Eigen::Vector3f::Zero());
+  cloud.labels.assign(2, 50);
+  EXPECT_THROW(extract(cloud), std::invalid_argument);
+  const auto result = extract(LabeledCloud{});
+  EXPECT_TRUE(result.nodes.empty());
+  EXPECT_EQ(result.stats.input_points, 0u);
+  for (int c = 0; c < sgtllc::kNumClasses; ++c) EXPECT_EQ(result.stats.clusters[c], 0);
+}
+
+}  // namespace
