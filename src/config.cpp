@@ -50,7 +50,7 @@ void Config::validate() const {
   require(finite(v.ransac_confidence) && v.ransac_confidence > 0.0 && v.ransac_confidence <= 1.0,
           "verification.ransac_confidence", "must be in (0, 1]");
   require(finite(v.sigma_4), "verification.sigma_4", "must be a finite number");
-  require(threads >= 1, "threads", "must be >= 1");
+  require(threads >= 1 && threads <= kMaxThreads, "threads", "must be in 1.." + std::to_string(kMaxThreads));
 }
 
 }  // namespace sgtllc

@@ -29,9 +29,10 @@ std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph,
   for (int i = 0; i < graph.size(); ++i) {
     LocalDescriptor& des = out[i];
     for (int a = 0; a < kNumSlots; ++a) {
-      des.slots[a].setZero();
       const TwoStepPath& path = graph.paths[i][a];
-      if (!path.exists()) continue;
+      // A k = i winner (only with graph.allow_k_equals_i) blocks the slot but is degenerate (a_i = a_k = 0): the
+      // authors' code never enables it on the query side (spec §3, §4), so it stays empty here.
+      if (!path.exists() || path.k == i) continue;
       const Eigen::Vector3d t =
           triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
       des.slots[a] = (config.order == SubVectorOrder::kPaper ? t : Eigen::Vector3d(t[0], t[2], -t[1])).cast<float>();

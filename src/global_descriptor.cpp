@@ -36,7 +36,7 @@ std::vector<float> computeGlobalDescriptor(const SemanticGraph& graph, const std
       int cell = 0;
       switch (config.global_mode) {
         case GlobalMode::kG1:
-          value = local[i].slots[a][2];
+          value = slotTerms(local[i].slots[a], config.order)[2];  // a_k, the paper's Des[α][2]
           cell = 2 * kNumClasses * o + kNumClasses * fuzzyGroup(m) + n;
           break;
         case GlobalMode::kG2:

@@ -1,5 +1,7 @@
 #include "sgtllc/graph.h"
 
+#include <string>
+
 namespace sgtllc {
 namespace {
 
@@ -22,6 +24,14 @@ std::vector<std::pair<int, int>> SemanticGraph::edges() const {
 }
 
 SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config) {
+  // Nodes may come straight from a user (LoopDetector::process(nodes), node files): check what indexing relies on.
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {
+      throw Error("node " + std::to_string(i) + " has label " + std::to_string(nodes[i].label) +
+                  ", not a stable class index 0..6");
+    }
+    if (!nodes[i].centre.allFinite()) throw Error("node " + std::to_string(i) + " has a NaN or Inf centre");
+  }
   SemanticGraph g;
   g.nodes = std::move(nodes);
   const int n = g.size();

@@ -1,5 +1,7 @@
 #include "sgtllc/parallel.h"
 
+#include <algorithm>
+
 namespace sgtllc {
 
 void parallelFor(int n, int threads, const std::function<void(int)>& f) {
@@ -7,7 +9,9 @@ void parallelFor(int n, int threads, const std::function<void(int)>& f) {
     for (int i = 0; i < n; ++i) f(i);
     return;
   }
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+  // Never start more threads than there are items (15 candidates need no larger team).
+  const int team = std::min(threads, n);
+#pragma omp parallel for num_threads(team) schedule(dynamic, 1)
   for (int i = 0; i < n; ++i) f(i);
 }
 

@@ -68,10 +68,11 @@ int iterationsNeeded(int inliers, int n, const RansacParams& params) {
     p_good *= params.with_replacement ? static_cast<double>(inliers) / n
                                       : std::max(0.0, static_cast<double>(inliers - s) / (n - s));
   }
-  if (p_good <= 0.0) return std::numeric_limits<int>::max();
   if (p_good >= 1.0) return 1;
-  const double k = std::ceil(std::log(1.0 - params.confidence) / std::log(1.0 - p_good));
-  return k >= std::numeric_limits<int>::max() ? std::numeric_limits<int>::max() : static_cast<int>(k);
+  // log1p keeps tiny probabilities (7 draws at a low inlier share underflow 1 − p_good to 1) from giving log 0.
+  const double k = std::ceil(std::log1p(-params.confidence) / std::log1p(-p_good));
+  if (!(k < std::numeric_limits<int>::max())) return std::numeric_limits<int>::max();  // also p_good = 0 (NaN/inf)
+  return std::max(1, static_cast<int>(k));
 }
 
 }  // namespace

@@ -229,6 +229,33 @@ TEST(Ransac, AcceptanceNeedsMinInliersAndFraction) {
   EXPECT_FALSE(accepted(31, 0.5));
 }
 
+TEST(Ransac, AdaptiveStopNeverCutsALowInlierSearchShort) {
+  // 300 pairs, half of them outliers: an all-inlier sample of 7 (with replacement) has probability 1/128, so the
+  // adaptive bound exceeds 500 and the search must run exactly as with confidence 1. An early, poor hypothesis
+  // (1–2 inliers: all-inlier probability ~1e-16) must not end it either (log(1 − p) underflow).
+  std::mt19937 rng(30);
+  std::uniform_real_distribution<double> u(-40.0, 40.0);
+  const Eigen::Matrix4d T = makeT(randomRotation(rng), Eigen::Vector3d(3.0, -1.0, 0.5));
+  Points src, dst;
+  for (int k = 0; k < 300; ++k) {
+    src.emplace_back(u(rng), u(rng), u(rng));
+    dst.push_back(k % 2 == 0 ? Eigen::Vector3d(T.topLeftCorner<3, 3>() * src.back() + T.topRightCorner<3, 1>())
+                             : Eigen::Vector3d(u(rng), u(rng), u(rng)));
+  }
+  int found = 0;
+  for (uint32_t seed = 0; seed < 40; ++seed) {
+    sgtllc::RansacParams adaptive;
+    adaptive.seed = seed;
+    sgtllc::RansacParams exhaustive = adaptive;
+    exhaustive.confidence = 1.0;
+    const auto a = sgtllc::ransacRigid(src, dst, adaptive);
+    const auto b = sgtllc::ransacRigid(src, dst, exhaustive);
+    EXPECT_EQ(a.inliers, b.inliers) << "seed " << seed;
+    found += a.inliers.size() >= 150;
+  }
+  EXPECT_GE(found, 35);  // 500 draws find an all-inlier sample with probability 0.98
+}
+
 // --- (c) nodeSimilarity / associateNodes on hand-built descriptors -------------------------------------------------
 
 TEST(NodeSimilarity, RatioAndCountOverValidQuerySlots) {

@@ -97,7 +97,7 @@ TEST(ConfigYaml, WrongTypesAreNamed) {
 TEST(ConfigYaml, OutOfRangeValuesAreNamed) {
   EXPECT_THAT(errorOf("graph:\n  sigma_d: -3\n"), HasSubstr("my.yaml: config: graph.sigma_d must be > 0"));
   EXPECT_THAT(errorOf("cluster:\n  pole:\n    min_size: 0\n"), HasSubstr("cluster.pole.min_size must be >= 1"));
-  EXPECT_THAT(errorOf("threads: 0\n"), HasSubstr("threads must be >= 1"));
+  EXPECT_THAT(errorOf("threads: 0\n"), HasSubstr("threads must be in 1..256"));
 }
 
 TEST(ConfigYaml, MalformedYamlAndMissingFile) {

@@ -51,8 +51,8 @@ Eigen::Isometry3d randomRigid(std::mt19937& rng, double max_tilt_deg, double max
 
 // --- Brute-force references ----------------------------------------------------------------------------------------
 
-/// Des^G from spec §5 / global_descriptor.h with the reference paths, in double. G1 pools the stored entry [2]:
-/// a_k in the paper order, −a_j in the code order.
+/// Des^G from spec §5 / global_descriptor.h with the reference paths, in double. G1 pools a_k (the paper's
+/// Des[α][2] in its own order) whatever the storage order.
 std::vector<double> bruteGlobal(const std::vector<Node>& nodes, const RefGraph& g, GlobalMode mode,
                                 SubVectorOrder order) {
   std::vector<double> des(mode == GlobalMode::kG2 ? 343 : 98, 0.0);
@@ -64,8 +64,8 @@ std::vector<double> bruteGlobal(const std::vector<Node>& nodes, const RefGraph& 
       const Eigen::Vector3d pi = nodes[i].centre, pj = nodes[j].centre, pk = nodes[k].centre;
       const double cos_k = (pi - pk).dot(pj - pk) / ((pi - pk).norm() * (pj - pk).norm());
       const Eigen::Vector3d t = terms(pi, pj, pk);
-      const double entry2 = order == SubVectorOrder::kPaper ? t[2] : -t[1];
-      const double value = mode == GlobalMode::kG1 ? entry2 : 1.0 - cos_k;
+      (void)order;  // the storage order must not change Des^G
+      const double value = mode == GlobalMode::kG1 ? t[2] : 1.0 - cos_k;
       const int cell = mode == GlobalMode::kG2 ? 49 * o + a : 14 * o + 7 * fuzzy + n;
       des[cell] = std::max(des[cell], value);
     }
@@ -153,11 +153,17 @@ TEST(Descriptor, HandBuiltSlotValues) {
 TEST(Descriptor, KEqualsISlot) {
   GraphConfig allow;
   allow.allow_k_equals_i = true;
-  const auto des = sgtllc::computeLocalDescriptors(sgtllc::buildGraph(handNodes(), allow), {});
-  // 0→1→0: a_i = 0, a_j = |ij|² = 9, a_k = 0.
-  EXPECT_TRUE(des[0].isValid(slot(1, 0)));
-  EXPECT_EQ(des[0].slots[slot(1, 0)], Eigen::Vector3f(0, 9, 0));
-  EXPECT_EQ(des[0].numValid(), 5);  // also 0→2→0
+  const auto g = sgtllc::buildGraph(handNodes(), allow);
+  const auto des = sgtllc::computeLocalDescriptors(g, {});
+  // 0→1→0 wins node 0's (fence, building) slot, but the degenerate triangle (a_i = a_k = 0) leaves it empty, as
+  // the authors' code never enables it (spec §3, §4); the same for 0→2→0.
+  EXPECT_EQ(g.paths[0][slot(1, 0)].j, 1);
+  EXPECT_EQ(g.paths[0][slot(1, 0)].k, 0);
+  EXPECT_FALSE(des[0].isValid(slot(1, 0)));
+  EXPECT_EQ(des[0].slots[slot(1, 0)], Eigen::Vector3f(0, 0, 0));
+  EXPECT_EQ(des[0].numValid(), 3);
+  const auto without = sgtllc::computeLocalDescriptors(sgtllc::buildGraph(handNodes(), GraphConfig{}), {});
+  EXPECT_EQ(without[0].numValid(), 3);
   EXPECT_EQ(sgtllc::triangleTerms({0, 0, 0}, {3, 0, 0}, {0, 0, 0}), Eigen::Vector3d(0, 9, 0));
 }
 
@@ -188,19 +194,31 @@ TEST(GlobalDescriptor, HandBuilt) {
 }
 
 TEST(GlobalDescriptor, DegenerateTriangleNeverUpdates) {
-  // With k = i allowed, 0→1→0 has |ik| = 0: no angle at k, so G2 ignores it; the cell of node 0's (fence, building)
-  // slot stays 0 while a_k = 0 also leaves G1 at 0.
-  GraphConfig allow;
-  allow.allow_k_equals_i = true;
-  const auto g = sgtllc::buildGraph(handNodes(), allow);
+  // A pole centred exactly on the building: the triangle 0→1→2 (building → fence → pole) has |ik| = 0, so there
+  // is no angle at k. The slot is a valid triangle (a_i = 0, a_j = 9, a_k = 0), but G2/G3 must not take a value
+  // from it and every cell stays finite.
+  const std::vector<Node> nodes = {node(0, 0, 0, sgtllc::kBuilding), node(3, 0, 0, sgtllc::kFence), node(0, 0, 0, sgtllc::kPole)};
+  const auto g = sgtllc::buildGraph(nodes, GraphConfig{});
   const auto des = sgtllc::computeLocalDescriptors(g, {});
-  ASSERT_TRUE(des[0].isValid(slot(1, 0)));
+  ASSERT_TRUE(des[0].isValid(slot(sgtllc::kFence, sgtllc::kPole)));
+  EXPECT_EQ(des[0].slots[slot(sgtllc::kFence, sgtllc::kPole)], Eigen::Vector3f(0, 9, 0));
   sgtllc::DescriptorConfig cfg;
   cfg.global_mode = GlobalMode::kG2;
   const auto g2 = sgtllc::computeGlobalDescriptor(g, des, cfg);
   for (float v : g2) EXPECT_TRUE(std::isfinite(v));
-  EXPECT_EQ(g2[slot(1, 0)], 0.0f);
-  EXPECT_EQ(g2[slot(2, 0)], 0.0f);
+  EXPECT_EQ(g2[49 * sgtllc::kBuilding + slot(sgtllc::kFence, sgtllc::kPole)], 0.0f);
+  cfg.global_mode = GlobalMode::kG3;
+  const auto g3 = sgtllc::computeGlobalDescriptor(g, des, cfg);
+  for (float v : g3) EXPECT_TRUE(std::isfinite(v));
+  EXPECT_EQ(g3[14 * sgtllc::kBuilding + 7 * 0 + sgtllc::kPole], 0.0f);
+  // With k = i allowed, the path 0→1→0 wins node 0's (fence, building) slot and leaves it empty: no update either.
+  GraphConfig allow;
+  allow.allow_k_equals_i = true;
+  const auto ga = sgtllc::buildGraph(handNodes(), allow);
+  const auto da = sgtllc::computeLocalDescriptors(ga, {});
+  EXPECT_FALSE(da[0].isValid(slot(sgtllc::kFence, sgtllc::kBuilding)));
+  const auto g2a = sgtllc::computeGlobalDescriptor(ga, da, cfg);
+  for (float v : g2a) EXPECT_TRUE(std::isfinite(v));
 }
 
 // --- (b) Random node sets against the brute force ------------------------------------------------------------------

@@ -32,14 +32,15 @@ void expectGraphMatches(const std::vector<Node>& nodes, const GraphConfig& cfg) 
       ASSERT_EQ(std::make_pair(g.paths[a][s].j, g.paths[a][s].k), ref.paths[a][s]) << "node " << a << " slot " << s;
     }
   }
-  // Local descriptors follow the reference paths (paper order).
+  // Local descriptors follow the reference paths (paper order); a k = i winner leaves its slot empty.
   const auto des = sgtllc::computeLocalDescriptors(g, {});
   for (int i = 0; i < n; ++i) {
     for (int s = 0; s < kNumSlots; ++s) {
       const auto [j, k] = ref.paths[i][s];
-      ASSERT_EQ(des[i].isValid(s), j >= 0);
+      const bool triangle = j >= 0 && k != i;
+      ASSERT_EQ(des[i].isValid(s), triangle);
       const Eigen::Vector3f want =
-          j < 0 ? Eigen::Vector3f::Zero()
+          !triangle ? Eigen::Vector3f::Zero()
                 : terms(nodes[i].centre, nodes[j].centre, nodes[k].centre).cast<float>().eval();
       ASSERT_EQ(des[i].slots[s], want) << "node " << i << " slot " << s;
     }

@@ -59,7 +59,9 @@ struct ClusterConfig {
 
 struct GraphConfig {
   double sigma_d = 30.0;           ///< σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (spec §3)
-  bool allow_k_equals_i = false;   ///< allow the two-step path i→j→i, as the authors' code (spec §3 [CHOICE])
+  /// Let the path i→j→i compete for a slot, as the authors' code; such a winner leaves the slot empty
+  /// (spec §3 [CHOICE]).
+  bool allow_k_equals_i = false;
 };
 
 /// Order of the three sub-vector entries of a local-descriptor slot (spec §4).
@@ -129,6 +131,9 @@ struct VerificationConfig {
   double sigma_4 = 0.3;           ///< σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (spec §7.4, §8)
   uint32_t seed = 42;             ///< RANSAC random seed; every candidate starts from it (spec §7.2 [CHOICE])
 };
+
+/// Upper bound of Config::threads.
+inline constexpr int kMaxThreads = 256;
 
 /// Everything the pipeline reads. Modules receive only their own sub-struct.
 struct Config {

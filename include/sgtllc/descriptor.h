@@ -15,6 +15,10 @@ namespace sgtllc {
 
 /// Des_i ∈ R^{49×3}: slot α = 7m + n holds the triangle (i, j*, k*) of T_i[m][n] as three raw dot products (m²).
 struct LocalDescriptor {
+  LocalDescriptor() {
+    for (Eigen::Vector3f& s : slots) s.setZero();
+  }
+
   std::array<Eigen::Vector3f, kNumSlots> slots;  ///< zero where the slot is empty
   uint64_t valid = 0;                            ///< bit α set iff slot α holds a triangle
 

@@ -14,7 +14,7 @@ namespace sgtllc {
 int globalDescriptorSize(GlobalMode mode);
 
 /// Des^G of a frame (spec §5). Every cell starts at 0 and takes the max over nodes i and their valid slots:
-/// - G1: cell 14·l_i + 7·fuzzy(m) + n, value = entry [2] of the stored slot (a_k in the paper order);
+/// - G1: cell 14·l_i + 7·fuzzy(m) + n, value = a_k (the paper's Des_i[α][2], whatever the storage order);
 /// - G2: cell 49·l_i + 7·m + n, value = 1 − cos θ_k (θ_k the triangle's interior angle at v_k);
 /// - G3: the G1 cells with the G2 value.
 /// fuzzy(m) = 0 for building, fence, vegetation (background), 1 otherwise. Degenerate triangles never update.

@@ -40,7 +40,8 @@ struct SemanticGraph {
 
 /// Builds the graph of @p nodes (spec §3): A[p][q] = 1 iff ‖c_p − c_q‖ < σ_d; for every node i and class pair
 /// (m, n) the path i→j→k with l_j = m, l_k = n maximising d_ij + d_jk, ties to the lowest j then the lowest k,
-/// with k ≠ i unless allow_k_equals_i. O(N² · 7).
+/// with k ≠ i unless allow_k_equals_i. O(N² · 7). Throws sgtllc::Error for a label outside 0..6 or a
+/// non-finite centre.
 SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config);
 
 }  // namespace sgtllc
