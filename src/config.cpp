@@ -22,8 +22,10 @@ void Config::validate() const {
   for (int c = 0; c < kNumClasses; ++c) {
     const std::string key = std::string("cluster.") + kClassNames[c];
     const ClassClusterConfig& p = cluster.classes[c];
-    require(finite(p.voxel) && p.voxel >= 0.0, key + ".voxel", "must be >= 0 (0 = no downsampling)");
-    require(finite(p.radius) && p.radius > 0.0, key + ".radius", "must be > 0");
+    // Lower bounds keep voxel cells of points within ±1e6 m inside the exact integer cell range.
+    require(finite(p.voxel) && (p.voxel == 0.0 || p.voxel >= 0.001), key + ".voxel",
+            "must be 0 (no downsampling) or >= 0.001 m");
+    require(finite(p.radius) && p.radius >= 0.001, key + ".radius", "must be >= 0.001 m");
     require(p.min_size >= 1, key + ".min_size", "must be >= 1");
   }
   require(cluster.max_neighbors >= 1, "cluster.max_neighbors", "must be >= 1");

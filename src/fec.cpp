@@ -15,7 +15,7 @@ class HashGrid {
   HashGrid(const std::vector<Eigen::Vector3f>& points, double cell)
       : inv_cell_(static_cast<float>(1.0 / cell)), index_(points.size() / 2 + 16) {
     std::vector<uint32_t> cell_of(points.size());
-    for (size_t i = 0; i < points.size(); ++i) cell_of[i] = index_.insert(key(points[i]));
+    for (size_t i = 0; i < points.size(); ++i) cell_of[i] = index_.insert(internal::cellOf(points[i], inv_cell_));
     start_.assign(index_.size() + 1, 0);
     for (uint32_t c : cell_of) ++start_[c + 1];
     std::partial_sum(start_.begin(), start_.end(), start_.begin());
@@ -27,11 +27,11 @@ class HashGrid {
   /// Calls f(index) for every point in the 27 cells around @p p.
   template <typename F>
   void forEachNear(const Eigen::Vector3f& p, F&& f) const {
-    const Eigen::Array3i c = internal::cellOf(p, inv_cell_);
+    const internal::Cell c = internal::cellOf(p, inv_cell_);
     for (int dz = -1; dz <= 1; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-          const uint32_t cell = index_.find(internal::packCell(c.x() + dx, c.y() + dy, c.z() + dz));
+          const uint32_t cell = index_.find(internal::offset(c, dx, dy, dz));
           if (cell == internal::KeyIndex::kMissing) continue;
           for (uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) f(members_[k]);
         }
@@ -40,11 +40,6 @@ class HashGrid {
   }
 
  private:
-  uint64_t key(const Eigen::Vector3f& p) const {
-    const Eigen::Array3i c = internal::cellOf(p, inv_cell_);
-    return internal::packCell(c.x(), c.y(), c.z());
-  }
-
   float inv_cell_;
   internal::KeyIndex index_;
   std::vector<uint32_t> start_;

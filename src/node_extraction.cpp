@@ -68,6 +68,10 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
       ++stats.nonfinite_points;
       continue;
     }
+    if (cloud.points[i].cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      ++stats.far_points;
+      continue;
+    }
     const uint32_t id = cloud.labels[i];
     if (!label_map_.isKnown(id)) {
       ++stats.unknown_label_points;

@@ -11,8 +11,7 @@ VoxelizedCloud voxelDownsample(const std::vector<Eigen::Vector3f>& points, doubl
   internal::KeyIndex index(points.size() / 4 + 16);
   VoxelizedCloud out;
   for (const Eigen::Vector3f& p : points) {
-    const Eigen::Array3i c = internal::cellOf(p, inv_leaf);
-    const uint32_t v = index.insert(internal::packCell(c.x(), c.y(), c.z()));
+    const uint32_t v = index.insert(internal::cellOf(p, inv_leaf));
     if (v == out.sums.size()) {
       out.sums.emplace_back(Eigen::Vector3d::Zero());
       out.counts.push_back(0);

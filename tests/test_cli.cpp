@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -186,6 +187,43 @@ TEST_F(Cli, BadCommandLineIsAUsageError) {
   EXPECT_EQ(run("frobnicate").status, 2);
 }
 
+TEST_F(Cli, ConfigThatIsAFolderIsAnError) {
+  const CliRun r = run("pair --config " + dir_.string() + " " + scan("004501") + " " + scan("000052"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr(dir_.string()));
+  EXPECT_THAT(r.out, HasSubstr("directory"));
+}
+
+TEST_F(Cli, HugePcdFieldCountIsAnErrorNotACrash) {
+  writeBytes("k.pcd",
+             "FIELDS p x q y z label\nSIZE 4 4 4 4 4 4\nTYPE U F U F F U\n"
+             "COUNT 2305843009213693952 1 2305843009213693952 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binary\n" +
+                 std::string(16, '\0'));
+  const CliRun r = run("pair " + path("k.pcd") + " " + path("k.pcd"));
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("k.pcd:4"));
+  EXPECT_THAT(r.out, HasSubstr("COUNT"));
+}
+
+TEST_F(Cli, FarTranslationsPrintInFull) {
+  // The same objects 20 km away: a loop whose translation needs more digits than the usual column width.
+  std::ofstream a(path("a.txt")), b(path("b.txt"));
+  a.precision(12);
+  b.precision(12);
+  const int ids[] = {50, 51, 70, 71, 80, 81};
+  for (int k = 0; k < 24; ++k) {
+    const double x = 7.0 * std::cos(k * 1.3) * (1 + k % 5), y = 6.0 * std::sin(k * 0.7) * (1 + k % 4), z = k % 3;
+    a << x << " " << y << " " << z << " " << ids[k % 6] << "\n";
+    b << x - 20000.0 << " " << y << " " << z << " " << ids[k % 6] << "\n";
+  }
+  a.close();
+  b.close();
+  const CliRun r = run("pair " + path("a.txt") + " " + path("b.txt"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("loop: YES"));
+  EXPECT_THAT(r.out, HasSubstr("-20000.000000 ]"));
+}
+
 /// A SemanticKITTI-layout sequence: 52, 88, 50 frames without stable classes, 850, 4501.
 void makeSequence(const fs::path& dir) {
   fs::create_directories(dir / "velodyne");
@@ -233,6 +271,18 @@ TEST_F(Cli, RunFindsThePlantedLoopAndWritesCsv) {
   ASSERT_EQ(two.status, 0) << two.out;
   std::ifstream a(path("loops.csv")), b(path("loops2.csv"));
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+}
+
+TEST_F(Cli, RunChecksTheOutputPathBeforeWorking) {
+  makeSequence(dir_ / "seq");
+  const CliRun r = run("run " + (dir_ / "seq").string() + " --out " + path("no/such/folder/loops.csv"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("does not exist"));
+  EXPECT_THAT(r.out, Not(HasSubstr("frames 54")));
+  const CliRun d = run("run " + (dir_ / "seq").string() + " --force --out " + (dir_ / "seq").string());
+  EXPECT_EQ(d.status, 1);
+  EXPECT_THAT(d.out, HasSubstr("is a directory"));
+  EXPECT_EQ(run("run " + (dir_ / "seq").string() + " --threads 100000").status, 2);
 }
 
 TEST_F(Cli, RunNamesAMissingLabelFile) {

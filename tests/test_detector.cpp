@@ -114,8 +114,11 @@ TEST_F(KittiPairs, NonFiniteAndUnknownPointsAreDroppedAndCounted) {
   scan.labels.push_back(70);
   scan.points.push_back({1.f, 2.f, 3.f});
   scan.labels.push_back(12345);  // not a SemanticKITTI id
+  scan.points.push_back({1.f, 2e12f, 3.f});  // would overflow integer voxel cells
+  scan.labels.push_back(50);
   const PairResult r = comparePair(scan, *s52);
   EXPECT_EQ(r.extraction_query.nonfinite_points, 2u);
+  EXPECT_EQ(r.extraction_query.far_points, 1u);
   EXPECT_EQ(r.extraction_query.unknown_label_points, 1u);
   EXPECT_TRUE(r.is_loop);
   scan.labels.pop_back();

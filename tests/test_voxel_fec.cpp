@@ -192,6 +192,15 @@ TEST(VoxelDownsample, MatchesMapReference) {
   }
 }
 
+TEST(VoxelDownsample, DistantVoxelsNeverShareACell) {
+  // 838870.8 m is 2^21 voxels of 0.4 m beyond 10 m: a key packed into 21 bits per axis would merge them.
+  const auto out = sgtllc::voxelDownsample({{10.f, 0.f, 0.f}, {838870.8f, 0.f, 0.f}, {10.1f, 0.f, 0.f}}, 0.4);
+  ASSERT_EQ(out.centroids.size(), 2u);
+  EXPECT_EQ(out.counts[0], 2u);
+  EXPECT_NEAR(out.centroids[0].x(), 10.05f, 1e-5f);
+  EXPECT_EQ(out.centroids[1].x(), 838870.8f);
+}
+
 TEST(VoxelDownsample, EmptyInput) { EXPECT_TRUE(sgtllc::voxelDownsample({}, 0.4).centroids.empty()); }
 
 // --- (b) FEC -------------------------------------------------------------------------------------------------------

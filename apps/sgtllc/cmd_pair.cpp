@@ -42,13 +42,25 @@ std::vector<io::PlyEdge> graphEdges(const std::vector<Node>& nodes, const Config
 /// query.ply and match.ply (each graph in its own frame), matches.ply (the match graph with the query nodes moved
 /// by T_match_query and one edge per association: green inlier, red outlier), and both node sets as node files
 /// (query_nodes.txt, match_nodes.txt) that `sgtllc pair` reads back.
-void exportGraphs(const std::string& dir, const PairResult& r, const Config& config, bool force) {
+struct ExportPaths {
+  std::string q, m, qm, qn, mn;
+};
+
+/// Creates the export folder and checks every file can be written, before any work is done.
+ExportPaths prepareExport(const std::string& dir, bool force) {
   namespace fs = std::filesystem;
-  fs::create_directories(dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw Error("cannot create export folder " + dir + ": " + ec.message());
   const auto in_dir = [&](const char* name) { return (fs::path(dir) / name).string(); };
-  const std::string q = in_dir("query.ply"), m = in_dir("match.ply"), qm = in_dir("matches.ply");
-  const std::string qn = in_dir("query_nodes.txt"), mn = in_dir("match_nodes.txt");
-  for (const auto& path : {q, m, qm, qn, mn}) checkWritable(path, force);
+  ExportPaths p{in_dir("query.ply"), in_dir("match.ply"), in_dir("matches.ply"), in_dir("query_nodes.txt"),
+                in_dir("match_nodes.txt")};
+  for (const auto& path : {p.q, p.m, p.qm, p.qn, p.mn}) checkWritable(path, force);
+  return p;
+}
+
+void exportGraphs(const ExportPaths& p, const PairResult& r, const Config& config) {
+  const auto& [q, m, qm, qn, mn] = p;
   io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0));
   io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0));
   io::writeNodesTxt(qn, r.query_nodes);
@@ -122,11 +134,12 @@ void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},
                               {"timing_ms", timingJson(r.timing, load_ms)}};
-  std::cout << out.dump(2) << "\n";
+  std::cout << jsonText(out) << "\n";
 }
 
 void runPair(const PairOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
+  const ExportPaths paths = o.export_dir.empty() ? ExportPaths{} : prepareExport(o.export_dir, o.force);
   FrameNodes q = loadFrameNodes(o.query, o.labels_query, o.label_field, config);
   FrameNodes mt = loadFrameNodes(o.match, o.labels_match, o.label_field, config);
   for (const auto& [name, f] : {std::pair<const std::string&, const FrameNodes&>{o.query, q}, {o.match, mt}}) {
@@ -142,7 +155,7 @@ void runPair(const PairOptions& o) {
   } else {
     printText(o, r, q, mt, config, load_ms);
   }
-  if (!o.export_dir.empty()) exportGraphs(o.export_dir, r, config, o.force);
+  if (!o.export_dir.empty()) exportGraphs(paths, r, config);
 }
 
 }  // namespace

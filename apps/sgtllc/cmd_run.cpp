@@ -97,7 +97,7 @@ void runSequence(const RunOptions& o) {
       r.timing.extraction_ms = p.extraction_ms;
       frame_ms.push_back(r.timing.total_ms());
       load_ms.push_back(p.load_ms);
-      if (stats.nonfinite_points > 0 || stats.unknown_label_points > 0) {
+      if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0) {
         progress.clear();
         warnAboutInput(seq.binPath(index), stats, r.num_nodes);
       }
@@ -138,7 +138,7 @@ void runSequence(const RunOptions& o) {
                                 {"load_ms_median", percentile(load_ms, 0.5)},
                                 {"db_bytes_per_frame", bytes_per_frame},
                                 {"loop_list", list}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << jsonText(out) << "\n";
   } else {
     std::cout << "frames " << n << ", loops " << loops.size() << ", ms per frame: median "
               << fixed(percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(percentile(frame_ms, 0.99), 2)
@@ -157,7 +157,7 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--out", o->out, "write the detected loops as CSV (query,match,score,score_c, 3x4 pose)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and the loops as one JSON object");
   cmd->add_flag("--force", o->force, "overwrite an existing --out file");
   cmd->callback([o] { runSequence(*o); });

@@ -68,8 +68,15 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
 }
 
 void checkWritable(const std::string& path, bool force) {
+  if (fs::is_directory(path)) throw Error("cannot write " + path + ": is a directory");
   if (fs::exists(path) && !force) {
     throw Error(path + ": file exists; choose another name or pass --force to overwrite it");
+  }
+  // Probe the folder now, so a bad path fails before minutes of work rather than after.
+  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  if (!fs::is_directory(parent)) throw Error("cannot write " + path + ": folder " + parent.string() + " does not exist");
+  if (::access(parent.c_str(), W_OK) != 0) {
+    throw Error("cannot write " + path + ": folder " + parent.string() + " is not writable");
   }
 }
 
@@ -85,7 +92,8 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
   std::error_code ec;
   fs::rename(tmp, path, ec);
   if (ec) {
-    fs::remove(tmp, ec);
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
     throw Error("cannot write " + path + ": " + ec.message());
   }
 }
@@ -94,6 +102,10 @@ void warnAboutInput(const std::string& name, const ExtractionStats& stats, int n
   if (stats.nonfinite_points > 0) {
     std::cerr << "warning: " << name << ": dropped " << stats.nonfinite_points
               << " points with NaN or Inf coordinates\n";
+  }
+  if (stats.far_points > 0) {
+    std::cerr << "warning: " << name << ": dropped " << stats.far_points
+              << " points farther than 1000 km from the sensor on an axis\n";
   }
   if (stats.unknown_label_points > 0) {
     std::cerr << "warning: " << name << ": ignored " << stats.unknown_label_points
@@ -122,15 +134,21 @@ std::string fixed(double v, int digits) {
 
 std::string matrixText(const Eigen::Matrix4d& T, const std::string& indent) {
   std::string s;
+  char buf[64];
   for (int r = 0; r < 4; ++r) {
     s += indent + "[";
     for (int c = 0; c < 4; ++c) {
-      const std::string v = fixed(T(r, c), 6);
-      s += std::string(c ? 12 - v.size() : 10 - v.size(), ' ') + v;
+      std::snprintf(buf, sizeof(buf), c ? " %11.6f" : "%10.6f", T(r, c));
+      s += buf;
     }
     s += " ]\n";
   }
   return s;
+}
+
+std::string jsonText(const Json& j) {
+  // File names need not be UTF-8; replace invalid bytes instead of failing after the work is done.
+  return j.dump(2, ' ', false, Json::error_handler_t::replace);
 }
 
 Json timingJson(const StageTimes& t, double load_ms) {

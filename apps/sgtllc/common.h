@@ -52,6 +52,8 @@ void warnAboutInput(const std::string& name, const ExtractionStats& stats, int n
 
 Json matrixJson(const Eigen::Matrix4d& T);
 std::string matrixText(const Eigen::Matrix4d& T, const std::string& indent);
+/// Indented JSON text; bytes that are not UTF-8 (from file names) are replaced, never an error.
+std::string jsonText(const Json& j);
 Json timingJson(const StageTimes& t, double load_ms);
 
 /// "%.*f" formatting.

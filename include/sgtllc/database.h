@@ -45,7 +45,8 @@ class FrameDatabase {
   int globalDimension() const;
 
   /// The @p k frames among 0..last (inclusive) nearest to @p global, nearest first; ties go to the lower index.
-  /// Returns fewer if fewer frames are eligible, none if last < 0.
+  /// Returns fewer if fewer frames are eligible, none if last < 0. With RetrievalMethod::kKdTree the tree is
+  /// extended here, so concurrent queries on one database are not safe (the detector queries from one thread).
   std::vector<RetrievedFrame> query(const std::vector<float>& global, int last, int k) const;
 
   /// Bytes held for frame @p index: its nodes, its global descriptor and per-frame bookkeeping.

@@ -17,11 +17,15 @@ namespace sgtllc {
 struct ExtractionStats {
   size_t input_points = 0;        ///< points given
   size_t nonfinite_points = 0;    ///< points with a NaN or Inf coordinate, dropped
+  size_t far_points = 0;          ///< points beyond ±kMaxCoordinate on an axis, dropped
   size_t unknown_label_points = 0;  ///< points whose id is not in the preset's label space, dropped
   std::array<size_t, kNumClasses> class_points{};  ///< kept points per stable class
   std::array<int, kNumClasses> clusters{};          ///< clusters of at least min_size per class
   int duplicates_suppressed = 0;  ///< clusters skipped because an accepted same-class centre was too close
 };
+
+/// Largest |coordinate| (m) a point may have: far beyond any LiDAR range, small enough for exact voxel cells.
+inline constexpr float kMaxCoordinate = 1.0e6f;
 
 /// Nodes of one scan, building first … traffic-sign last, each class in FEC order (spec §2 node order).
 struct NodeExtractionResult {

@@ -1,5 +1,5 @@
 /// @file voxel_hash.h
-/// @brief Integer voxel keys and a small open-addressing map from key to dense index (internal).
+/// @brief Integer cell coordinates and a small open-addressing map from cell to dense index (internal).
 ///
 /// Node extraction hashes ~60k points per scan twice (downsampling and the FEC neighbour grid); std::unordered_map
 /// allocates per entry and costs several times more here, and no flat hash map ships in Debian's C++ set.
@@ -13,19 +13,25 @@
 
 namespace sgtllc::internal {
 
-/// Packs the integer cell coordinates (21 bits each, two's complement) of a point into one 64-bit key.
-inline uint64_t packCell(int64_t ix, int64_t iy, int64_t iz) {
-  constexpr uint64_t kMask = (1ull << 21) - 1;
-  return (static_cast<uint64_t>(ix) & kMask) | ((static_cast<uint64_t>(iy) & kMask) << 21) |
-         ((static_cast<uint64_t>(iz) & kMask) << 42);
+/// Integer coordinates of a cubic cell.
+struct Cell {
+  int32_t x, y, z;
+  bool operator==(const Cell& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+
+/// Largest |cell coordinate|: coordinates are clamped here so the float → int conversion is always defined.
+/// Node extraction drops points beyond ±1e6 m and configs need leaves ≥ 1 mm, so real cells stay below it.
+inline constexpr float kMaxCell = 1073741824.0f;  // 2^30
+
+/// The cell of a point for cells of edge 1 / inv_size.
+inline Cell cellOf(const Eigen::Vector3f& p, float inv_size) {
+  const Eigen::Array3f c = (p.array() * inv_size).floor().max(-kMaxCell).min(kMaxCell);
+  return Cell{static_cast<int32_t>(c.x()), static_cast<int32_t>(c.y()), static_cast<int32_t>(c.z())};
 }
 
-/// Integer cell coordinates of a point for cells of edge 1 / inv_size.
-inline Eigen::Array3i cellOf(const Eigen::Vector3f& p, float inv_size) {
-  return (p.array() * inv_size).floor().cast<int>();
-}
+inline Cell offset(const Cell& c, int dx, int dy, int dz) { return Cell{c.x + dx, c.y + dy, c.z + dz}; }
 
-/// Map from a 64-bit key to a dense index 0..size()-1 in order of first insertion (so results never depend on
+/// Map from a cell to a dense index 0..size()-1 in order of first insertion (so results never depend on
 /// the hash function). Linear probing over a power-of-two table kept at most half full.
 class KeyIndex {
  public:
@@ -34,12 +40,12 @@ class KeyIndex {
   explicit KeyIndex(size_t expected_keys) {
     size_t capacity = 16;
     while (capacity < 2 * expected_keys) capacity *= 2;
-    slots_.assign(capacity, Slot{0, kMissing});
+    slots_.assign(capacity, Slot{Cell{0, 0, 0}, kMissing});
     mask_ = capacity - 1;
   }
 
   /// Index of @p key, inserting it with the next dense index if absent.
-  uint32_t insert(uint64_t key) {
+  uint32_t insert(const Cell& key) {
     if (2 * (size_ + 1) > slots_.size()) grow();
     size_t pos = hash(key) & mask_;
     while (slots_[pos].index != kMissing) {
@@ -51,7 +57,7 @@ class KeyIndex {
   }
 
   /// Index of @p key, or kMissing.
-  uint32_t find(uint64_t key) const {
+  uint32_t find(const Cell& key) const {
     size_t pos = hash(key) & mask_;
     while (slots_[pos].index != kMissing) {
       if (slots_[pos].key == key) return slots_[pos].index;
@@ -64,12 +70,15 @@ class KeyIndex {
 
  private:
   struct Slot {
-    uint64_t key;
+    Cell key;
     uint32_t index;
   };
 
-  // splitmix64 finaliser: packed keys differ in few low bits per axis, so they need mixing before masking.
-  static uint64_t hash(uint64_t x) {
+  // splitmix64 finaliser over the packed coordinates: neighbouring cells differ in few low bits, so they need
+  // mixing before masking. Full keys are compared, so distant cells never collide.
+  static uint64_t hash(const Cell& c) {
+    uint64_t x = static_cast<uint32_t>(c.x) * 0x9E3779B97F4A7C15ull ^ static_cast<uint64_t>(static_cast<uint32_t>(c.y)) << 21 ^
+                 static_cast<uint64_t>(static_cast<uint32_t>(c.z)) << 42;
     x ^= x >> 30;
     x *= 0xbf58476d1ce4e5b9ull;
     x ^= x >> 27;
@@ -81,7 +90,7 @@ class KeyIndex {
   void grow() {
     std::vector<Slot> old;
     old.swap(slots_);
-    slots_.assign(old.size() * 2, Slot{0, kMissing});
+    slots_.assign(old.size() * 2, Slot{Cell{0, 0, 0}, kMissing});
     mask_ = slots_.size() - 1;
     for (const Slot& s : old) {
       if (s.index == kMissing) continue;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <charconv>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -12,6 +11,8 @@
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
+
+#include "file_util.h"
 
 namespace sgtllc::io {
 namespace {
@@ -311,11 +312,8 @@ Config parseConfig(const std::string& yaml, const std::string& source) {
 }
 
 Config loadConfig(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error("cannot open config file " + path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseConfig(buffer.str(), path);
+  // detail::readWholeFile names the file and the reason (missing, a directory, unreadable).
+  return parseConfig(detail::readWholeFile(path), path);
 }
 
 }  // namespace sgtllc::io

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 #include <string_view>
 
 #include <Eigen/LU>
@@ -51,7 +52,12 @@ std::vector<T> readWordFile(const std::string& path, size_t record_words, const 
     throw Error(path + ": size " + std::to_string(bytes) + " bytes is not a multiple of " +
                 std::to_string(record_bytes) + " (" + what + ")");
   }
-  std::vector<T> words(bytes / sizeof(T));
+  std::vector<T> words;
+  try {
+    words.resize(bytes / sizeof(T));
+  } catch (const std::bad_alloc&) {
+    throw Error(path + ": " + std::to_string(bytes) + " bytes do not fit in memory");
+  }
   if (!words.empty() && std::fread(words.data(), sizeof(T), words.size(), file.get()) != words.size()) {
     throw Error("cannot read " + path + ": " + (std::ferror(file.get()) ? std::strerror(errno) : "file shrank"));
   }

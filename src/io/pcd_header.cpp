@@ -65,8 +65,12 @@ std::vector<PcdField> buildFields(const HeaderLine& names, const HeaderLine& siz
       badHeader(path, types.line, "TYPE '" + std::string(type) + "' is not I, U or F");
     }
     f.type = type[0];
-    if (counts && (!parseInteger(counts->values[i], f.count) || f.count == 0)) {
-      badHeader(path, counts->line, "COUNT '" + std::string(counts->values[i]) + "' is not a positive integer");
+    // A bound far above any real field (PCL's largest are 308-float histograms) keeps SIZE × COUNT and the sum
+    // over fields from overflowing into wrapped offsets.
+    constexpr size_t kMaxCount = size_t{1} << 20;
+    if (counts && (!parseInteger(counts->values[i], f.count) || f.count == 0 || f.count > kMaxCount)) {
+      badHeader(path, counts->line,
+                "COUNT '" + std::string(counts->values[i]) + "' is not an integer in 1.." + std::to_string(kMaxCount));
     }
   }
   return fields;
