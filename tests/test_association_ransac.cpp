@@ -15,6 +15,7 @@
 #include "sgtllc/node_extraction.h"
 #include "sgtllc/ransac.h"
 #include "sgtllc/verification.h"
+#include "test_support.h"
 
 namespace {
 
@@ -120,9 +121,7 @@ std::vector<std::tuple<int, int, double>> tuples(const std::vector<sgtllc::NodeM
 }
 
 std::vector<Node> scanNodes(const std::string& name) {
-  const std::string dir = std::string(SGTLLC_DATA_DIR) + "/kitti/00/";
-  const auto scan = sgtllc::io::readLabeledScan(dir + "velodyne/" + name + ".bin", dir + "labels/" + name + ".label");
-  return sgtllc::NodeExtractor({}, {}).extract(scan).nodes;
+  return sgtllc::NodeExtractor({}, {}).extract(sgtllc::test::kittiScan(name)).nodes;
 }
 
 DescribedFrame describe(const std::vector<Node>& nodes, const sgtllc::Config& cfg = {}) {
