@@ -5,19 +5,27 @@
 namespace sgtllc {
 
 double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match, const AssociationConfig& config,
-                      SubVectorOrder order) {
+                      const DescriptorConfig& descriptor) {
   const int enable = query.numValid();
   if (enable == 0) return 0.0;
-  const int vj = vjEntry(order);
+  // Entries compared (Table IV ablation drops one), in storage order.
+  Eigen::Vector3f keep = Eigen::Vector3f::Zero();
+  for (int v = 0; v < 3; ++v) {
+    if (config.entries & (1u << v)) keep[storedIndex(v, descriptor.order)] = 1.0f;
+  }
+  const bool all = config.entries == 0b111;
+  // The |Δa_j| test is in m² and belongs to dot-product slots (spec §6).
+  const bool delta_test = descriptor.kind == SubVectorKind::kDotProducts && (config.entries & 0b010);
+  const int vj = vjEntry(descriptor.order);
   const float sigma_1 = static_cast<float>(config.sigma_1);
   const float max_delta = static_cast<float>(config.max_delta_aj);
   int matches = 0;
   // Both slots must hold a triangle (spec §6 [CHOICE]); the code also matched empty candidate slots via NaN.
   for (uint64_t both = query.valid & match.valid; both != 0; both &= both - 1) {
     const int a = __builtin_ctzll(both);
-    const Eigen::Vector3f& u = query.slots[a];
-    const Eigen::Vector3f& v = match.slots[a];
-    if (std::abs(u[vj] - v[vj]) >= max_delta) continue;
+    const Eigen::Vector3f u = all ? query.slots[a] : query.slots[a].cwiseProduct(keep);
+    const Eigen::Vector3f v = all ? match.slots[a] : match.slots[a].cwiseProduct(keep);
+    if (delta_test && std::abs(u[vj] - v[vj]) >= max_delta) continue;
     // cos(u, v) > σ_1 without a division; a zero-length sub-vector never matches.
     if (u.dot(v) > sigma_1 * u.norm() * v.norm()) ++matches;
   }
@@ -25,7 +33,7 @@ double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match
 }
 
 std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
-                                      const AssociationConfig& config, SubVectorOrder order) {
+                                      const AssociationConfig& config, const DescriptorConfig& descriptor) {
   std::vector<NodeMatch> out;
   for (int i = 0; i < query.numNodes(); ++i) {
     if (query.graph.isolated[i]) continue;
@@ -34,7 +42,7 @@ std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const Describ
     double best_score = 0.0;
     for (int j = 0; j < match.numNodes(); ++j) {
       if (match.graph.nodes[j].label != label) continue;
-      const double s = nodeSimilarity(query.local[i], match.local[j], config, order);
+      const double s = nodeSimilarity(query.local[i], match.local[j], config, descriptor);
       if (s > best_score) {  // strict, starting from 0: ties keep the lowest j (spec §6)
         best_score = s;
         best = j;

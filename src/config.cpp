@@ -40,6 +40,8 @@ void Config::validate() const {
   require(finite(association.max_delta_aj) && association.max_delta_aj > 0.0, "association.max_delta_aj",
           "must be > 0");
   require(finite(association.sigma_2) && association.sigma_2 >= 0.0, "association.sigma_2", "must be >= 0");
+  require(association.entries >= 1 && association.entries <= 7, "association.entries",
+          "must keep at least one of the v_i, v_j, v_k entries");
   const VerificationConfig& v = verification;
   require(finite(v.sigma_3) && v.sigma_3 >= 0.0, "verification.sigma_3", "must be >= 0");
   require(v.min_associations >= 1, "verification.min_associations", "must be >= 1");

@@ -1,6 +1,8 @@
 #include "sgtllc/descriptor.h"
 
+#include <algorithm>
 #include <bitset>
+#include <cmath>
 
 namespace sgtllc {
 
@@ -18,6 +20,17 @@ Eigen::Vector3d triangleTerms(const Eigen::Vector3d& pi, const Eigen::Vector3d& 
   return {(pj - pi).dot(pk - pi), (pi - pj).dot(pk - pj), (pi - pk).dot(pj - pk)};
 }
 
+Eigen::Vector3d vertexEntries(const Eigen::Vector3d& t, SubVectorKind kind) {
+  if (kind == SubVectorKind::kDotProducts) return t;
+  // Squared sides from the dot products: |ij|² = a_i + a_j, |ik|² = a_i + a_k, |jk|² = a_j + a_k (spec §4).
+  const double ij = std::sqrt(std::max(0.0, t[0] + t[1]));
+  const double ik = std::sqrt(std::max(0.0, t[0] + t[2]));
+  const double jk = std::sqrt(std::max(0.0, t[1] + t[2]));
+  if (kind == SubVectorKind::kLengths) return {jk, ik, ij};
+  const auto cosine = [](double dot, double a, double b) { return a * b > 0.0 ? dot / (a * b) : 0.0; };
+  return {cosine(t[0], ij, ik), cosine(t[1], ij, jk), cosine(t[2], ik, jk)};
+}
+
 Eigen::Vector3d slotTerms(const Eigen::Vector3f& slot, SubVectorOrder order) {
   const Eigen::Vector3d s = slot.cast<double>();
   if (order == SubVectorOrder::kPaper) return s;
@@ -33,9 +46,9 @@ std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph,
       // A k = i winner (only with graph.allow_k_equals_i) blocks the slot but is degenerate (a_i = a_k = 0): the
       // authors' code never enables it on the query side (spec §3, §4), so it stays empty here.
       if (!path.exists() || path.k == i) continue;
-      const Eigen::Vector3d t =
-          triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
-      des.slots[a] = (config.order == SubVectorOrder::kPaper ? t : Eigen::Vector3d(t[0], t[2], -t[1])).cast<float>();
+      const Eigen::Vector3d e = vertexEntries(
+          triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre), config.kind);
+      des.slots[a] = (config.order == SubVectorOrder::kPaper ? e : Eigen::Vector3d(e[0], e[2], -e[1])).cast<float>();
       des.valid |= uint64_t{1} << a;
     }
   }

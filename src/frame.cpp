@@ -8,7 +8,7 @@ DescribedFrame describeFrame(std::vector<Node> nodes, const GraphConfig& graph, 
   DescribedFrame f;
   f.graph = buildGraph(std::move(nodes), graph);
   f.local = computeLocalDescriptors(f.graph, descriptor);
-  f.global = computeGlobalDescriptor(f.graph, f.local, descriptor);
+  f.global = computeGlobalDescriptor(f.graph, descriptor);
   return f;
 }
 

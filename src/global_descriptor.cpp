@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sgtllc/descriptor.h"
+
 namespace sgtllc {
 namespace {
 
@@ -23,29 +25,32 @@ int globalDescriptorSize(GlobalMode mode) {
   return mode == GlobalMode::kG2 ? kNumClasses * kNumSlots : kNumClasses * 2 * kNumClasses;
 }
 
-std::vector<float> computeGlobalDescriptor(const SemanticGraph& graph, const std::vector<LocalDescriptor>& local,
-                                           const DescriptorConfig& config) {
+std::vector<float> computeGlobalDescriptor(const SemanticGraph& graph, const DescriptorConfig& config) {
   std::vector<float> des(globalDescriptorSize(config.global_mode), 0.0f);
   for (int i = 0; i < graph.size(); ++i) {
     const int o = graph.nodes[i].label;
     for (int a = 0; a < kNumSlots; ++a) {
-      if (!local[i].isValid(a)) continue;
+      const TwoStepPath& path = graph.paths[i][a];
+      if (!path.exists() || path.k == i) continue;  // the slots a local descriptor holds (descriptor.cpp)
+      const Eigen::Vector3d t =
+          triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
       const int m = a / kNumClasses;
       const int n = a % kNumClasses;
+      const int fuzzy_cell = 2 * kNumClasses * o + kNumClasses * fuzzyGroup(m) + n;
       double value = 0.0;
       int cell = 0;
       switch (config.global_mode) {
         case GlobalMode::kG1:
-          value = slotTerms(local[i].slots[a], config.order)[2];  // a_k, the paper's Des[α][2]
-          cell = 2 * kNumClasses * o + kNumClasses * fuzzyGroup(m) + n;
+          value = t[2];  // a_k
+          cell = fuzzy_cell;
           break;
         case GlobalMode::kG2:
-          value = oneMinusCosAtK(slotTerms(local[i].slots[a], config.order));
+          value = oneMinusCosAtK(t);
           cell = kNumSlots * o + a;
           break;
         case GlobalMode::kG3:
-          value = oneMinusCosAtK(slotTerms(local[i].slots[a], config.order));
-          cell = 2 * kNumClasses * o + kNumClasses * fuzzyGroup(m) + n;
+          value = oneMinusCosAtK(t);
+          cell = fuzzy_cell;
           break;
       }
       des[cell] = std::max(des[cell], static_cast<float>(value));

@@ -20,7 +20,7 @@ RansacParams ransacParams(const VerificationConfig& config) {
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
   const VerificationConfig& vc = config.verification;
   MatchResult result;
-  result.associations = associateNodes(query, match, config.association, config.descriptor.order);
+  result.associations = associateNodes(query, match, config.association, config.descriptor);
   const int la = static_cast<int>(result.associations.size());
   result.score_c = query.numNodes() > 0 ? static_cast<double>(la) / query.numNodes() : 0.0;
   if (result.score_c < vc.sigma_3 || la < vc.min_associations || la == 0) {
@@ -33,6 +33,14 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   for (const NodeMatch& m : result.associations) {
     source.push_back(query.graph.nodes[m.query].centre);
     target.push_back(match.graph.nodes[m.match].centre);
+  }
+  if (!vc.use_ransac) {
+    // Table IV "w/o RANSAC": score_c is the score and every association is used for the pose.
+    result.rejection = Rejection::kNone;
+    result.score_t = result.score_c;
+    for (int k = 0; k < la; ++k) result.inliers.push_back(k);
+    result.T_match_query = fitRigid(source, target);
+    return result;
   }
   const RansacResult ransac = ransacRigid(source, target, ransacParams(vc));
   if (!ransac.accepted) {

@@ -101,7 +101,9 @@ double similarity(const LocalDescriptor& q, const LocalDescriptor& m, double sig
   AssociationConfig cfg;
   cfg.sigma_1 = sigma_1;
   cfg.score = score;
-  return sgtllc::nodeSimilarity(q, m, cfg, order);
+  sgtllc::DescriptorConfig descriptor;
+  descriptor.order = order;
+  return sgtllc::nodeSimilarity(q, m, cfg, descriptor);
 }
 
 DescribedFrame frameOf(const std::vector<std::pair<int, LocalDescriptor>>& nodes, const std::vector<int>& isolated) {
@@ -305,19 +307,19 @@ TEST(AssociateNodes, SameLabelBestMatchTiesAndThreshold) {
   // q0 → m2 (m0 is identical but a trunk; m2 and m3 tie: lowest j); q1 isolated; q2's best is 0.25 < σ_2; q3 shares
   // m2 with q0; q4 has no vegetation candidate.
   using T3 = std::vector<std::tuple<int, int, double>>;
-  EXPECT_EQ(tuples(sgtllc::associateNodes(query, match, cfg, SubVectorOrder::kPaper)), (T3{{0, 2, 1.0}, {3, 2, 1.0}}));
+  EXPECT_EQ(tuples(sgtllc::associateNodes(query, match, cfg, sgtllc::DescriptorConfig{})), (T3{{0, 2, 1.0}, {3, 2, 1.0}}));
   cfg.sigma_2 = 0.25;  // S ≥ σ_2 accepts equality
-  EXPECT_EQ(tuples(sgtllc::associateNodes(query, match, cfg, SubVectorOrder::kPaper)),
+  EXPECT_EQ(tuples(sgtllc::associateNodes(query, match, cfg, sgtllc::DescriptorConfig{})),
             (T3{{0, 2, 1.0}, {2, 4, 0.25}, {3, 2, 1.0}}));
   cfg.sigma_2 = 0.3;
   cfg.score = sgtllc::NodeScore::kCount;
-  EXPECT_EQ(tuples(sgtllc::associateNodes(query, match, cfg, SubVectorOrder::kPaper)),
+  EXPECT_EQ(tuples(sgtllc::associateNodes(query, match, cfg, sgtllc::DescriptorConfig{})),
             (T3{{0, 2, 4.0}, {2, 4, 1.0}, {3, 2, 4.0}}));
   // A zero similarity never makes an association, even with σ_2 = 0 (the best starts at 0, strict >).
   cfg.score = sgtllc::NodeScore::kRatio;
   cfg.sigma_2 = 0.0;
   const DescribedFrame zero = frameOf({{kBuilding, des({{40, {0, 0, 9}}})}}, {});
-  EXPECT_TRUE(sgtllc::associateNodes(zero, match, cfg, SubVectorOrder::kPaper).empty());
+  EXPECT_TRUE(sgtllc::associateNodes(zero, match, cfg, sgtllc::DescriptorConfig{}).empty());
 }
 
 // --- (d) matchFrames on real nodes ---------------------------------------------------------------------------------

@@ -224,29 +224,7 @@ TEST_F(Cli, FarTranslationsPrintInFull) {
   EXPECT_THAT(r.out, HasSubstr("-20000.000000 ]"));
 }
 
-/// A SemanticKITTI-layout sequence: 52, 88, 50 frames without stable classes, 850, 4501.
-void makeSequence(const fs::path& dir) {
-  fs::create_directories(dir / "velodyne");
-  fs::create_directories(dir / "labels");
-  int index = 0;
-  auto add = [&](const std::string& bin, const std::string& label) {
-    char name[16];
-    std::snprintf(name, sizeof(name), "%06d", index++);
-    fs::copy_file(bin, dir / "velodyne" / (std::string(name) + ".bin"));
-    fs::copy_file(label, dir / "labels" / (std::string(name) + ".label"));
-  };
-  auto real = [&](const std::string& frame) {
-    add(scan(frame), test::dataPath("kitti/00/labels/" + frame + ".label"));
-  };
-  real("000052");
-  real("000088");
-  std::ofstream(dir / "one.bin", std::ios::binary).write("\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0", 16);
-  const uint32_t road = 40;
-  std::ofstream(dir / "one.label", std::ios::binary).write(reinterpret_cast<const char*>(&road), 4);
-  for (int k = 0; k < 50; ++k) add((dir / "one.bin").string(), (dir / "one.label").string());
-  real("000850");
-  real("004501");
-}
+void makeSequence(const fs::path& dir) { test::makePlantedSequence(dir.string()); }
 
 TEST_F(Cli, RunFindsThePlantedLoopAndWritesCsv) {
   makeSequence(dir_ / "seq");

@@ -42,6 +42,9 @@ TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
   c.retrieval.warmup_frames = 150;
   c.association.score = NodeScore::kCount;
   c.association.sigma_2 = 3.0;
+  c.association.entries = 0b101;
+  c.descriptor.kind = SubVectorKind::kAngles;
+  c.verification.use_ransac = false;
   c.verification.score_formula = ScoreFormula::kLegacy;
   c.verification.sample_with_replacement = false;
   c.verification.seed = 4000000000u;
@@ -61,6 +64,9 @@ TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
   EXPECT_EQ(back.retrieval.warmup_frames, 150);
   EXPECT_EQ(back.association.score, NodeScore::kCount);
   EXPECT_EQ(back.association.sigma_2, 3.0);
+  EXPECT_EQ(back.association.entries, 0b101u);
+  EXPECT_EQ(back.descriptor.kind, SubVectorKind::kAngles);
+  EXPECT_FALSE(back.verification.use_ransac);
   EXPECT_EQ(back.verification.score_formula, ScoreFormula::kLegacy);
   EXPECT_FALSE(back.verification.sample_with_replacement);
   EXPECT_EQ(back.verification.seed, 4000000000u);
@@ -92,6 +98,11 @@ TEST(ConfigYaml, WrongTypesAreNamed) {
   EXPECT_THAT(errorOf("graph: 3\n"), HasSubstr("graph: expected a map"));
   EXPECT_THAT(errorOf("verification:\n  seed: -1\n"), HasSubstr("verification.seed"));
   EXPECT_THAT(errorOf("labels:\n  custom_map: {50: 9}\n"), HasSubstr("classes must be integers -1..6"));
+  for (const char* bad : {"ii", "iq", "\"\""}) {
+    EXPECT_THAT(errorOf(std::string("association:\n  entries: ") + bad + "\n"),
+                HasSubstr("association.entries: expected distinct letters from i, j, k"))
+        << bad;
+  }
 }
 
 TEST(ConfigYaml, OutOfRangeValuesAreNamed) {

@@ -181,15 +181,15 @@ TEST(GlobalDescriptor, HandBuilt) {
   sgtllc::DescriptorConfig cfg;
   // G1: cell 14·o + 7·fuzzy(m) + n, max a_k (cells that only see a_k ≤ 0 stay 0).
   cfg.global_mode = GlobalMode::kG1;
-  expectCells(sgtllc::computeGlobalDescriptor(g, des, cfg), 98,
+  expectCells(sgtllc::computeGlobalDescriptor(g, cfg), 98,
               {{2, 16}, {1, 9}, {5, 810}, {16, 16}, {29, 9}, {33, 810}, {70, 90}, {72, 106}});
   // G2: cell 49·o + 7·m + n, 1 − cos θ_k.
   cfg.global_mode = GlobalMode::kG2;
-  expectCells(sgtllc::computeGlobalDescriptor(g, des, cfg), 343,
+  expectCells(sgtllc::computeGlobalDescriptor(g, cfg), 343,
               {{9, 0.2}, {15, 0.4}, {51, 0.2}, {63, 1.0}, {99, 0.4}, {105, 1.0}, {110, c2}, {254, c3}});
   // G3: the G1 cells with the G2 values.
   cfg.global_mode = GlobalMode::kG3;
-  expectCells(sgtllc::computeGlobalDescriptor(g, des, cfg), 98,
+  expectCells(sgtllc::computeGlobalDescriptor(g, cfg), 98,
               {{2, 0.2}, {1, 0.4}, {16, 0.2}, {14, 1.0}, {29, 0.4}, {28, 1.0}, {33, c2}, {72, c3}});
 }
 
@@ -204,11 +204,11 @@ TEST(GlobalDescriptor, DegenerateTriangleNeverUpdates) {
   EXPECT_EQ(des[0].slots[slot(sgtllc::kFence, sgtllc::kPole)], Eigen::Vector3f(0, 9, 0));
   sgtllc::DescriptorConfig cfg;
   cfg.global_mode = GlobalMode::kG2;
-  const auto g2 = sgtllc::computeGlobalDescriptor(g, des, cfg);
+  const auto g2 = sgtllc::computeGlobalDescriptor(g, cfg);
   for (float v : g2) EXPECT_TRUE(std::isfinite(v));
   EXPECT_EQ(g2[49 * sgtllc::kBuilding + slot(sgtllc::kFence, sgtllc::kPole)], 0.0f);
   cfg.global_mode = GlobalMode::kG3;
-  const auto g3 = sgtllc::computeGlobalDescriptor(g, des, cfg);
+  const auto g3 = sgtllc::computeGlobalDescriptor(g, cfg);
   for (float v : g3) EXPECT_TRUE(std::isfinite(v));
   EXPECT_EQ(g3[14 * sgtllc::kBuilding + 7 * 0 + sgtllc::kPole], 0.0f);
   // With k = i allowed, the path 0→1→0 wins node 0's (fence, building) slot and leaves it empty: no update either.
@@ -217,7 +217,7 @@ TEST(GlobalDescriptor, DegenerateTriangleNeverUpdates) {
   const auto ga = sgtllc::buildGraph(handNodes(), allow);
   const auto da = sgtllc::computeLocalDescriptors(ga, {});
   EXPECT_FALSE(da[0].isValid(slot(sgtllc::kFence, sgtllc::kBuilding)));
-  const auto g2a = sgtllc::computeGlobalDescriptor(ga, da, cfg);
+  const auto g2a = sgtllc::computeGlobalDescriptor(ga, cfg);
   for (float v : g2a) EXPECT_TRUE(std::isfinite(v));
 }
 

@@ -1,15 +1,12 @@
 // `sgtllc run SEQ_DIR`: streams a SemanticKITTI-layout sequence through the online detector.
-#include <algorithm>
-#include <chrono>
-#include <exception>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "commands.h"
 #include "common.h"
-#include "sgtllc/io/sequence.h"
-#include "sgtllc/parallel.h"
+#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/eval/sequence_eval.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -29,21 +26,6 @@ struct Loop {
   Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
 };
 
-/// A frame read and reduced to nodes by a worker, ahead of the (sequential) detector.
-struct Prepared {
-  NodeExtractionResult nodes;
-  double load_ms = 0.0;
-  double extraction_ms = 0.0;
-  std::exception_ptr error;
-};
-
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t k = static_cast<size_t>(q * (v.size() - 1) + 0.5);
-  return v[std::min(k, v.size() - 1)];
-}
-
 std::string csv(const std::vector<Loop>& loops) {
   std::ostringstream s;
   s << "query,match,score,score_c,r11,r12,r13,tx,r21,r22,r23,ty,r31,r32,r33,tz\n";
@@ -60,62 +42,35 @@ std::string csv(const std::vector<Loop>& loops) {
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   if (!o.out.empty()) checkWritable(o.out, o.force);
-  const io::SequenceDir seq(o.sequence);
+  const eval::FrameSource source = eval::FrameSource::semanticKitti(o.sequence, config);
   LoopDetector detector(config);
-  const NodeExtractor& extractor = detector.extractor();
 
   std::vector<Loop> loops;
   std::vector<double> frame_ms, load_ms;
-  Progress progress("frames", seq.size());
-  // Frames are read and clustered in parallel batches (a pure function of each frame), then fed to the detector
-  // in frame order, so the output is the same at any thread count.
-  const int batch = std::max(1, 4 * config.threads);
-  std::vector<Prepared> prepared;
-  for (size_t first = 0; first < seq.size(); first += batch) {
-    const int count = static_cast<int>(std::min<size_t>(batch, seq.size() - first));
-    prepared.assign(count, Prepared{});
-    parallelFor(count, config.threads, [&](int k) {
-      Prepared& p = prepared[k];
-      try {
-        auto t0 = std::chrono::steady_clock::now();
-        const LabeledCloud cloud = seq.load(first + k);
-        auto t1 = std::chrono::steady_clock::now();
-        p.nodes = extractor.extract(cloud);
-        auto t2 = std::chrono::steady_clock::now();
-        p.load_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-        p.extraction_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
-      } catch (...) {
-        p.error = std::current_exception();
-      }
-    });
-    for (int k = 0; k < count; ++k) {
-      Prepared& p = prepared[k];
-      if (p.error) std::rethrow_exception(p.error);
-      const size_t index = first + k;
-      const ExtractionStats stats = p.nodes.stats;
-      FrameResult r = detector.process(std::move(p.nodes.nodes));
-      r.timing.extraction_ms = p.extraction_ms;
-      frame_ms.push_back(r.timing.total_ms());
-      load_ms.push_back(p.load_ms);
-      if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0) {
-        progress.clear();
-        warnAboutInput(seq.binPath(index), stats, r.num_nodes);
-      }
-      if (const Candidate* c = r.loop()) {
-        loops.push_back(Loop{seq.frameName(index), seq.frameName(c->frame), c->match.score_t, c->match.score_c,
-                             c->match.T_match_query});
-        if (!o.json) {
-          progress.clear();
-          const Loop& l = loops.back();
-          std::cout << "loop " << l.query << " -> " << l.match << "  score " << fixed(l.score_t, 3) << "  score_c "
-                    << fixed(l.score_c, 3) << "  t = (" << fixed(l.T(0, 3), 2) << ", " << fixed(l.T(1, 3), 2)
-                    << ", " << fixed(l.T(2, 3), 2) << ") m\n"
-                    << std::flush;
-        }
-      }
-      progress.update(index + 1, std::to_string(loops.size()) + " loops");
+  Progress progress("frames", source.size());
+  eval::streamSequence(source, detector, config.threads,
+                       [&](size_t index, const eval::LoadedFrame& loaded, const FrameResult& r) {
+    frame_ms.push_back(r.timing.total_ms());
+    load_ms.push_back(loaded.load_ms);
+    const ExtractionStats& stats = loaded.stats;
+    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0) {
+      progress.clear();
+      warnAboutInput(source.name(index), stats, r.num_nodes);
     }
-  }
+    if (const Candidate* c = r.loop()) {
+      loops.push_back(Loop{source.name(index), source.name(static_cast<size_t>(c->frame)), c->match.score_t,
+                           c->match.score_c, c->match.T_match_query});
+      if (!o.json) {
+        progress.clear();
+        const Loop& l = loops.back();
+        std::cout << "loop " << l.query << " -> " << l.match << "  score " << fixed(l.score_t, 3) << "  score_c "
+                  << fixed(l.score_c, 3) << "  t = (" << fixed(l.T(0, 3), 2) << ", " << fixed(l.T(1, 3), 2) << ", "
+                  << fixed(l.T(2, 3), 2) << ") m\n"
+                  << std::flush;
+      }
+    }
+    progress.update(index + 1, std::to_string(loops.size()) + " loops");
+  });
   progress.finish();
   if (!o.out.empty()) writeFileAtomically(o.out, csv(loops));
 
@@ -133,16 +88,16 @@ void runSequence(const RunOptions& o) {
     const Json out = {{"sequence", o.sequence},
                                 {"frames", n},
                                 {"loops", loops.size()},
-                                {"ms_per_frame_median", percentile(frame_ms, 0.5)},
-                                {"ms_per_frame_p99", percentile(frame_ms, 0.99)},
-                                {"load_ms_median", percentile(load_ms, 0.5)},
+                                {"ms_per_frame_median", eval::percentile(frame_ms, 0.5)},
+                                {"ms_per_frame_p99", eval::percentile(frame_ms, 0.99)},
+                                {"load_ms_median", eval::percentile(load_ms, 0.5)},
                                 {"db_bytes_per_frame", bytes_per_frame},
                                 {"loop_list", list}};
     std::cout << jsonText(out) << "\n";
   } else {
     std::cout << "frames " << n << ", loops " << loops.size() << ", ms per frame: median "
-              << fixed(percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(percentile(frame_ms, 0.99), 2)
-              << " (load not included: median " << fixed(percentile(load_ms, 0.5), 2) << " ms), database "
+              << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
+              << " (load not included: median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
               << fixed(bytes_per_frame, 0) << " bytes per frame\n";
     if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";
   }

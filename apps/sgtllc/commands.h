@@ -8,5 +8,7 @@ namespace sgtllc::cli {
 void addPairCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addConfigCommand(CLI::App& app);
+void addEvalCommand(CLI::App& app);
+void addSimulateCommand(CLI::App& app);
 
 }  // namespace sgtllc::cli

@@ -16,6 +16,11 @@ namespace fs = std::filesystem;
 
 namespace sgtllc::cli {
 
+std::string& commandLine() {
+  static std::string line;
+  return line;
+}
+
 Config loadConfigOption(const std::string& path, int threads) {
   Config config = path.empty() ? Config{} : io::loadConfig(path);
   if (threads > 0) config.threads = threads;

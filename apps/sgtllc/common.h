@@ -21,6 +21,9 @@ using Json = nlohmann::ordered_json;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
 
+/// The command line this process was started with (set by main), for reports.
+std::string& commandLine();
+
 /// Configuration from --config (or the defaults), with --threads applied if given (> 0).
 Config loadConfigOption(const std::string& path, int threads);
 

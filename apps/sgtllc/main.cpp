@@ -13,7 +13,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "sgtllc 0.1.0");
   sgtllc::cli::addPairCommand(app);
   sgtllc::cli::addRunCommand(app);
+  sgtllc::cli::addEvalCommand(app);
+  sgtllc::cli::addSimulateCommand(app);
   sgtllc::cli::addConfigCommand(app);
+  std::string& line = sgtllc::cli::commandLine();
+  line = "sgtllc";
+  for (int a = 1; a < argc; ++a) line += std::string(" ") + argv[a];
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

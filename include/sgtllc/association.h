@@ -17,14 +17,15 @@ struct NodeMatch {
 };
 
 /// Similarity S[i][j] of query node i and match node j (spec §6): over the slots valid in the query, the share
-/// (or, with NodeScore::kCount, the number) whose sub-vectors are valid in both with cos > σ_1 and |Δa_j| below
-/// max_delta_aj. Returns 0 if node i has no valid slot.
+/// (or, with NodeScore::kCount, the number) whose sub-vectors are valid in both with cos > σ_1 over the kept
+/// entries (AssociationConfig::entries) and, for dot-product slots, |Δa_j| below max_delta_aj. Returns 0 if
+/// node i has no valid slot.
 double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match, const AssociationConfig& config,
-                      SubVectorOrder order);
+                      const DescriptorConfig& descriptor);
 
 /// LA: for every non-isolated query node, its most similar same-class match node (ties to the lowest index),
 /// kept iff S ≥ σ_2. Several query nodes may share a match node, as in Algorithm 1. In query-node order.
 std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
-                                      const AssociationConfig& config, SubVectorOrder order);
+                                      const AssociationConfig& config, const DescriptorConfig& descriptor);
 
 }  // namespace sgtllc

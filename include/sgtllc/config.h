@@ -77,7 +77,15 @@ enum class GlobalMode {
   kG3,  ///< hybrid: 98-D fuzzy pooling of max 1 − cos θ_k [default]
 };
 
+/// What a slot's three entries measure (the paper's Table IV ablation). Each entry belongs to one triangle vertex.
+enum class SubVectorKind {
+  kDotProducts,  ///< a_v = the dot product of the two edges leaving vertex v (m²): angle and length [default]
+  kAngles,       ///< cos of the interior angle at v: angle only (scale-free)
+  kLengths,      ///< length of the side opposite v (m): length only
+};
+
 struct DescriptorConfig {
+  SubVectorKind kind = SubVectorKind::kDotProducts;  ///< slot entries (spec §4; others for ablation)
   SubVectorOrder order = SubVectorOrder::kPaper;  ///< sub-vector entry order (spec §4 [CHOICE])
   GlobalMode global_mode = GlobalMode::kG3;       ///< global descriptor Des^G (spec §5 [CHOICE])
 };
@@ -106,6 +114,9 @@ struct AssociationConfig {
   double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (spec §6)
   double sigma_2 = 0.3;          ///< σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6)
   NodeScore score = NodeScore::kRatio;  ///< node similarity form (spec §6)
+  /// Sub-vector entries compared, by vertex: bit 0 = v_i, bit 1 = v_j, bit 2 = v_k (ablation: drop one). The
+  /// |Δa_j| test applies only to dot-product slots with the v_j entry kept.
+  unsigned entries = 0b111;
 };
 
 /// Formula of the loop score score_t (spec §7.3).
@@ -128,6 +139,8 @@ struct VerificationConfig {
   /// candidate that passes the gates; at the inlier ratios of true loops (60–80 %, spec §11) ~50 suffice]
   double ransac_confidence = 0.999;
   ScoreFormula score_formula = ScoreFormula::kPaper;  ///< score_t formula (spec §7.3 [CHOICE])
+  /// false = no RANSAC (Table IV "w/o RANSAC"): score_t = score_c and the pose is fitted to all associations.
+  bool use_ransac = true;
   double sigma_4 = 0.3;           ///< σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (spec §7.4, §8)
   uint32_t seed = 42;             ///< RANSAC random seed; every candidate starts from it (spec §7.2 [CHOICE])
 };

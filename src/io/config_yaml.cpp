@@ -142,6 +142,30 @@ Field customMap() {
       }};
 }
 
+/// association.entries as the letters of the kept vertices, e.g. "ijk" or "ik".
+Field entriesField() {
+  return Field{"association.entries", "sub-vector entries compared, by vertex: any of i, j, k (ablation)",
+               [](const Config& c) {
+                 std::string s;
+                 for (int v = 0; v < 3; ++v) {
+                   if (c.association.entries & (1u << v)) s += "ijk"[v];
+                 }
+                 return s;
+               },
+               [](Config& c, const YAML::Node& n) -> std::string {
+                 const std::string s = scalarText(n);
+                 unsigned mask = 0;
+                 for (char ch : s) {
+                   const size_t v = std::string("ijk").find(ch);
+                   if (v == std::string::npos || (mask & (1u << v))) return "expected distinct letters from i, j, k";
+                   mask |= 1u << v;
+                 }
+                 if (mask == 0) return "expected distinct letters from i, j, k";
+                 c.association.entries = mask;
+                 return "";
+               }};
+}
+
 const std::vector<Field>& fields() {
   static const std::vector<Field> all = [] {
     std::vector<Field> f;
@@ -173,6 +197,11 @@ const std::vector<Field>& fields() {
                        [](Config& c) -> double& { return c.graph.sigma_d; }));
     f.push_back(boolean("graph.allow_k_equals_i", "allow the path i→j→i (authors' code)",
                         [](Config& c) -> bool& { return c.graph.allow_k_equals_i; }));
+    f.push_back(choice<SubVectorKind>("descriptor.kind", "slot entries: dot products, angles only, lengths only",
+                                      [](Config& c) -> SubVectorKind& { return c.descriptor.kind; },
+                                      {{"dot", SubVectorKind::kDotProducts},
+                                       {"angle", SubVectorKind::kAngles},
+                                       {"length", SubVectorKind::kLengths}}));
     f.push_back(choice<SubVectorOrder>("descriptor.order", "sub-vector entries: (a_i,a_j,a_k) or (a_i,a_k,-a_j)",
                                        [](Config& c) -> SubVectorOrder& { return c.descriptor.order; },
                                        {{"paper", SubVectorOrder::kPaper}, {"code", SubVectorOrder::kCode}}));
@@ -198,6 +227,7 @@ const std::vector<Field>& fields() {
     f.push_back(choice<NodeScore>("association.score", "node similarity S",
                                   [](Config& c) -> NodeScore& { return c.association.score; },
                                   {{"ratio", NodeScore::kRatio}, {"count", NodeScore::kCount}}));
+    f.push_back(entriesField());
     f.push_back(number("verification.sigma_3", "σ_3: skip a candidate iff score_c < σ_3",
                        [](Config& c) -> double& { return c.verification.sigma_3; }));
     f.push_back(integer<int>("verification.min_associations", "... or |LA| < this",
@@ -214,6 +244,8 @@ const std::vector<Field>& fields() {
                         [](Config& c) -> int& { return c.verification.min_inliers; }));
     f.push_back(number("verification.min_inlier_fraction", "... and >= this share of |LA|",
                        [](Config& c) -> double& { return c.verification.min_inlier_fraction; }));
+    f.push_back(boolean("verification.use_ransac", "false = score_c as the score, pose from all associations",
+                        [](Config& c) -> bool& { return c.verification.use_ransac; }));
     f.push_back(number("verification.ransac_confidence",
                        "stop RANSAC once an all-inlier sample is drawn with this probability; 1 = all iterations",
                        [](Config& c) -> double& { return c.verification.ransac_confidence; }));

@@ -1,0 +1,132 @@
+// `sgtllc eval SEQ_DIR`: the paper's protocol on a sequence (or a pair list), with a report.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "common.h"
+#include "sgtllc/eval/report.h"
+#include "sgtllc/io/config_yaml.h"
+
+namespace fs = std::filesystem;
+
+namespace sgtllc::cli {
+namespace {
+
+struct EvalCliOptions {
+  std::string sequence, pairs, nodes, report, config;
+  int threads = 0;
+  bool json = false;
+  bool force = false;
+  std::string command;
+};
+
+/// poses.txt + calib.txt of the sequence; an empty GroundTruth if @p required is false and poses.txt is absent.
+eval::GroundTruth loadTruth(const std::string& dir, bool required) {
+  const std::string poses = (fs::path(dir) / "poses.txt").string();
+  const std::string calib = (fs::path(dir) / "calib.txt").string();
+  if (!fs::exists(poses)) {
+    if (required) throw Error(poses + ": missing (sequence evaluation needs ground-truth poses and calib.txt)");
+    return {};
+  }
+  return eval::GroundTruth::fromKitti(poses, calib);
+}
+
+void checkReportFolder(const std::string& dir, bool force) {
+  if (dir.empty()) return;
+  if (fs::exists(fs::path(dir) / "report.md") && !force) {
+    throw Error(dir + ": already holds a report; choose another folder or pass --force to overwrite it");
+  }
+  if (fs::exists(dir) && !fs::is_directory(dir)) throw Error(dir + ": exists and is not a folder");
+}
+
+std::string summaryLine(const char* name, double value) { return std::string(name) + " " + fixed(value, 4); }
+
+void runEval(const EvalCliOptions& o) {
+  const Config config = loadConfigOption(o.config, o.threads);
+  checkReportFolder(o.report, o.force);
+  const eval::FrameSource source = o.nodes.empty() ? eval::FrameSource::semanticKitti(o.sequence, config)
+                                                   : eval::FrameSource::nodeFiles(o.nodes, config);
+  eval::EvalOptions options;
+  options.threads = config.threads;
+  Progress progress("frames", source.size());
+  options.progress = [&progress](size_t done, size_t, int loops) {
+    progress.update(done, std::to_string(loops) + " loops");
+  };
+  eval::ReportInfo info{o.nodes.empty() ? o.sequence : o.nodes, o.pairs, o.command, io::configToYaml(config), ""};
+
+  if (!o.pairs.empty()) {
+    const auto pairs = eval::readPairList(o.pairs);
+    const eval::GroundTruth truth = loadTruth(o.sequence, false);
+    options.progress = nullptr;  // pairs are scored in parallel; no per-frame progress
+    const eval::PairListRun run = eval::runPairListEvaluation(source, pairs, truth, config, options);
+    const eval::PairListMetrics m = eval::computePairListMetrics(run, options);
+    if (run.unavailable > 0) {
+      info.data_note = "Only " + std::to_string(m.n_available) + " of " + std::to_string(m.n_pairs) +
+                       " listed pairs have both frames in the input; the metrics cover those pairs only.";
+    }
+    if (!o.report.empty()) eval::writePairListReport(o.report, run, m, info);
+    if (o.json) {
+      std::cout << jsonText(eval::pairListMetricsJson(m, run)) << "\n";
+      return;
+    }
+    std::cout << "pairs " << m.n_pairs << ", scored " << m.n_available << " (both frames present), positives "
+              << m.curve.n_positive << ", negatives " << m.curve.n_negative << "\n"
+              << "decisions equal to the label: " << m.correct << " of " << m.n_available << "\n"
+              << summaryLine("F1max", m.curve.f1_max) << ", " << summaryLine("EP", m.curve.ep) << ", "
+              << summaryLine("recall@100%precision", m.curve.recall_at_100_precision) << "\n"
+              << "pose: " << m.poses.successes << " of " << m.poses.evaluated << " detected true loops within 2 m / 5 deg"
+              << (m.poses.successes ? ", mean RTE " + fixed(m.poses.rte_mean, 3) + " m, RRE " +
+                                          fixed(m.poses.rre_mean, 3) + " deg"
+                                    : std::string())
+              << "\n";
+  } else {
+    const eval::GroundTruth truth = loadTruth(o.sequence, true);
+    const eval::SequenceRun run = eval::runSequenceEvaluation(source, truth, config, options);
+    progress.finish();
+    const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
+    if (!o.report.empty()) eval::writeSequenceReport(o.report, run, m, options, info);
+    if (o.json) {
+      std::cout << jsonText(eval::sequenceMetricsJson(m)) << "\n";
+      return;
+    }
+    const eval::CurveMetrics& main = m.pairwise.at(0);
+    std::cout << "frames " << m.n_frames << ", queries " << m.n_queries << " (" << m.n_revisit_queries
+              << " with a revisit < 3 m), scored pairs " << main.n_positive << " positive / " << main.n_negative
+              << " negative\n"
+              << summaryLine("F1max", main.f1_max) << ", " << summaryLine("EP", main.ep) << ", "
+              << summaryLine("recall@100%precision", main.recall_at_100_precision) << ", "
+              << summaryLine("retrieval recall@15", m.retrieval_recall) << "\n"
+              << "top-1 per query: " << summaryLine("F1max", m.top1.f1_max) << ", " << summaryLine("EP", m.top1.ep)
+              << "\nloops detected " << m.loops_detected << " (true " << m.loops_true << ", false " << m.loops_false
+              << "); pose success " << fixed(m.poses.success_rate, 4) << ", mean RTE " << fixed(m.poses.rte_mean, 3)
+              << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"
+              << "ms per frame: median " << fixed(m.ms_per_frame_median, 2) << ", p99 " << fixed(m.ms_per_frame_p99, 2)
+              << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n";
+  }
+  if (!o.report.empty()) std::cout << "report: " << (fs::path(o.report) / "report.md").string() << "\n";
+}
+
+}  // namespace
+
+void addEvalCommand(CLI::App& app) {
+  auto o = std::make_shared<EvalCliOptions>();
+  CLI::App* cmd = app.add_subcommand("eval", "Precision/recall, F1max, EP and pose accuracy on a sequence or pair list");
+  cmd->add_option("SEQ_DIR", o->sequence,
+                  "sequence folder: velodyne/, labels/, poses.txt (KITTI cam0 poses) and calib.txt (Tr)")
+      ->required();
+  cmd->add_option("--pairs", o->pairs, "evaluate these 'query candidate label' pairs instead of the online protocol");
+  cmd->add_option("--nodes", o->nodes, "read frames from node files NAME.txt (x y z label rows) in this folder");
+  cmd->add_option("--report", o->report, "write report.md, metrics.json, CSV tables and PNG plots to this folder");
+  cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
+  cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
+      ->check(CLI::Range(1, kMaxThreads));
+  cmd->add_flag("--json", o->json, "print the metrics as one JSON object");
+  cmd->add_flag("--force", o->force, "overwrite an existing report in --report");
+  cmd->callback([o] {
+    o->command = commandLine();
+    runEval(*o);
+  });
+}
+
+}  // namespace sgtllc::cli

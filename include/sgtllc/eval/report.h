@@ -1,0 +1,42 @@
+/// @file report.h
+/// @brief Evaluation output: the metrics as JSON, and a report folder (report.md, metrics.json, CSV tables and
+///        PNG plots) a person reads at a glance.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sgtllc/eval/pair_eval.h"
+#include "sgtllc/eval/sequence_eval.h"
+
+namespace sgtllc::eval {
+
+using Json = nlohmann::ordered_json;
+
+/// What the report says about where its numbers come from.
+struct ReportInfo {
+  std::string input;          ///< sequence or node folder
+  std::string pairs_file;     ///< pair list, if any
+  std::string command;        ///< the command line that produced it
+  std::string config_yaml;    ///< the full configuration used
+  std::string data_note;      ///< e.g. which data this is (real KITTI, simulated, ...)
+};
+
+/// Sequence metrics with the keys `f1_max`, `ep`, `recall_at_100_precision`, `retrieval_recall_at_15`,
+/// `rte_mean`, `rre_mean`, `success_rate`, `n_queries`, `n_positive`, `ms_per_frame_median`, `ms_per_frame_p99`,
+/// `db_bytes_per_frame`, and the top-1 protocol, distance test and loop counts.
+Json sequenceMetricsJson(const SequenceMetrics& m);
+/// Pair-list metrics (`f1_max`, `ep`, `recall_at_100_precision`, counts, pose summary) and, for lists of at most
+/// @p list_limit pairs, every pair's result.
+Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_t list_limit = 100);
+
+/// Writes report.md, metrics.json, pr_curve.csv, frames.csv and pr_curves.png, timing.png, memory.png,
+/// trajectory.png into @p dir (created if needed). Throws sgtllc::Error naming a file that cannot be written.
+void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
+                         const EvalOptions& options, const ReportInfo& info);
+/// Writes report.md, metrics.json, pr_curve.csv, pairs.csv and pr_curves.png into @p dir.
+void writePairListReport(const std::string& dir, const PairListRun& run, const PairListMetrics& m,
+                         const ReportInfo& info);
+
+}  // namespace sgtllc::eval

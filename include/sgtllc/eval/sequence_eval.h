@@ -1,0 +1,106 @@
+/// @file sequence_eval.h
+/// @brief The paper's protocol over a whole sequence (spec §9): every query's 15 candidates scored against
+///        ground truth, PR curves at several positive distances, the top-1 protocol, retrieval recall, pose
+///        errors and per-frame cost.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sgtllc/config.h"
+#include "sgtllc/detector.h"
+#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/eval/ground_truth.h"
+#include "sgtllc/eval/metrics.h"
+
+namespace sgtllc::eval {
+
+struct EvalOptions {
+  /// Ground-truth distances (m) below which a pair is a true loop, one PR curve each; the first is the main one.
+  std::vector<double> positive_distances = {3.0, 5.0, 10.0, 15.0};
+  double negative_distance = 20.0;     ///< pairs farther apart are negatives; pairs in between are left out (m)
+  double pose_max_distance = 4.0;      ///< detected loops this close get a pose error (SGLC's loop_distance4) (m)
+  double success_translation = 2.0;    ///< a pose succeeds with RTE below this (m) ...
+  double success_rotation = 5.0;       ///< ... and RRE below this (deg)
+  int threads = 1;                     ///< reading and clustering threads (results do not depend on it)
+  /// Called after every frame with (frames done, total, loops so far).
+  std::function<void(size_t, size_t, int)> progress;
+};
+
+/// One retrieved candidate of a query, with its ground truth.
+struct CandidateRecord {
+  long frame = -1;             ///< frame number of the candidate
+  double score_t = 0.0;        ///< final score (0 when a gate failed)
+  double score_c = 0.0;
+  double distance = 0.0;       ///< ground-truth distance to the query (m)
+  double descriptor_distance2 = 0.0;  ///< squared L2 distance of the global descriptors
+  Rejection rejection = Rejection::kFewAssociations;
+};
+
+/// Everything measured for one frame.
+struct FrameRecord {
+  long frame = -1;            ///< frame number (poses.txt line)
+  std::string name;
+  int num_nodes = 0;
+  bool queried = false;       ///< the database had eligible frames (past the exclusion gap and warm-up)
+  bool has_revisit = false;   ///< an eligible frame lies within the main positive distance
+  std::vector<CandidateRecord> candidates;  ///< ascending frame
+  int best = -1;              ///< index into candidates of the highest score_t, or −1
+  bool is_loop = false;       ///< the detector declared a loop with candidates[best]
+  Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();  ///< the loop's pose (if is_loop)
+  bool pose_evaluated = false;  ///< is_loop and within pose_max_distance: pose_error is set
+  PoseError pose_error;
+  StageTimes timing;
+  double load_ms = 0.0;
+  size_t db_bytes = 0;        ///< database size after this frame
+};
+
+struct SequenceRun {
+  std::vector<FrameRecord> frames;
+  std::vector<Eigen::Vector3d> positions;  ///< ground-truth LiDAR position of each frame
+  bool contiguous = true;  ///< frame numbers are 0, 1, 2, …; otherwise the exclusion gap counts processed frames
+};
+
+/// Streams @p source through a LoopDetector(@p config) and records every query against @p truth. Throws
+/// sgtllc::Error if a frame name is not a frame number with a ground-truth pose.
+SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& truth, const Config& config,
+                                  const EvalOptions& options);
+
+/// Metrics of one PR curve.
+struct CurveMetrics {
+  double positive_distance = 0.0;
+  PrCurve curve;
+  double f1_max = 0.0;
+  double ep = 0.0;
+  double recall_at_100_precision = 0.0;
+  int n_positive = 0;
+  int n_negative = 0;
+};
+
+struct SequenceMetrics {
+  std::vector<CurveMetrics> pairwise;  ///< spec §9 pairwise protocol, one per positive distance ([0] is the main)
+  CurveMetrics top1;                   ///< one sample per query: its best candidate (Scan Context / SSC protocol)
+  int n_frames = 0;
+  int n_queries = 0;                   ///< frames that were queried
+  int n_revisit_queries = 0;           ///< queried frames with a true revisit (main positive distance)
+  double retrieval_recall = 0.0;       ///< share of revisit queries with a true match among their candidates
+  int loops_detected = 0;
+  int loops_true = 0;                  ///< detected loops whose match is within the main positive distance
+  int loops_false = 0;                 ///< detected loops whose match is beyond the negative distance
+  PoseSummary poses;
+  double ms_per_frame_median = 0.0;    ///< extraction + description + retrieval + verification (reading excluded)
+  double ms_per_frame_p99 = 0.0;
+  double db_bytes_per_frame = 0.0;     ///< final database size / frames
+};
+
+SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions& options);
+
+/// Metrics of a pooled sample set (shared by the sequence and pair-list protocols).
+CurveMetrics curveMetrics(const std::vector<ScoredSample>& samples, double positive_distance,
+                          int positives_override = 0);
+
+/// The q-quantile (0..1) of @p values, nearest rank; 0 for none.
+double percentile(std::vector<double> values, double q);
+
+}  // namespace sgtllc::eval

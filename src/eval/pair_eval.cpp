@@ -1,0 +1,116 @@
+#include "sgtllc/eval/pair_eval.h"
+
+#include <exception>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "sgtllc/parallel.h"
+
+namespace sgtllc::eval {
+namespace {
+
+bool parseFrame(const std::string& token, long* out) {
+  if (token.empty() || token.size() > 12) return false;
+  for (char c : token) {
+    if (c < '0' || c > '9') return false;
+  }
+  *out = std::stol(token);
+  return true;
+}
+
+}  // namespace
+
+std::vector<LoopPairLabel> readPairList(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("cannot open pair list " + path);
+  std::vector<LoopPairLabel> pairs;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream tokens(line);
+    std::string q, c, l, extra;
+    tokens >> q >> c >> l;
+    LoopPairLabel p;
+    if (!parseFrame(q, &p.query) || !parseFrame(c, &p.candidate) || (l != "0" && l != "1") || (tokens >> extra)) {
+      throw Error(path + ":" + std::to_string(number) + ": expected 'query candidate label' (frame numbers and 0/1)");
+    }
+    p.loop = l == "1";
+    pairs.push_back(p);
+  }
+  return pairs;
+}
+
+PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<LoopPairLabel>& pairs,
+                                  const GroundTruth& truth, const Config& config, const EvalOptions& options) {
+  config.validate();
+  std::map<long, size_t> index_of;
+  for (size_t i = 0; i < source.size(); ++i) index_of[source.number(i)] = i;
+
+  // Each frame that any available pair needs is read and clustered once.
+  PairListRun run;
+  std::map<long, size_t> slot_of;
+  std::vector<size_t> to_load;
+  for (const LoopPairLabel& p : pairs) {
+    PairRecord r;
+    r.pair = p;
+    r.available = index_of.count(p.query) && index_of.count(p.candidate);
+    run.unavailable += !r.available;
+    if (r.available) {
+      for (long f : {p.query, p.candidate}) {
+        if (slot_of.emplace(f, to_load.size()).second) to_load.push_back(index_of[f]);
+      }
+    }
+    run.pairs.push_back(r);
+  }
+  std::vector<DescribedFrame> frames(to_load.size());
+  std::vector<std::exception_ptr> errors(to_load.size());
+  parallelFor(static_cast<int>(to_load.size()), options.threads, [&](int k) {
+    try {
+      frames[k] = describeFrame(source.load(to_load[k]).nodes, config.graph, config.descriptor);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+
+  parallelFor(static_cast<int>(run.pairs.size()), options.threads, [&](int k) {
+    PairRecord& r = run.pairs[k];
+    if (!r.available) return;
+    const MatchResult m = matchFrames(frames[slot_of.at(r.pair.query)], frames[slot_of.at(r.pair.candidate)], config);
+    r.score_t = m.score_t;
+    r.score_c = m.score_c;
+    r.rejection = m.rejection;
+    r.is_loop = isLoop(m, config.verification);
+    if (r.is_loop && r.pair.loop && truth.has(r.pair.query) && truth.has(r.pair.candidate) &&
+        truth.distance(r.pair.query, r.pair.candidate) <= options.pose_max_distance) {
+      r.pose_evaluated = true;
+      r.pose_error = poseError(m.T_match_query, truth.relative(r.pair.candidate, r.pair.query));
+    }
+  });
+  if (options.progress) options.progress(run.pairs.size(), run.pairs.size(), 0);
+  return run;
+}
+
+PairListMetrics computePairListMetrics(const PairListRun& run, const EvalOptions& options) {
+  PairListMetrics m;
+  std::vector<ScoredSample> samples;
+  std::vector<PoseError> errors;
+  for (const PairRecord& r : run.pairs) {
+    ++m.n_pairs;
+    if (!r.available) continue;
+    ++m.n_available;
+    samples.push_back({r.score_t, r.pair.loop});
+    m.correct += r.is_loop == r.pair.loop;
+    if (r.pose_evaluated) errors.push_back(r.pose_error);
+  }
+  m.curve = curveMetrics(samples, options.positive_distances.at(0));
+  m.poses = summarisePoses(errors, options.success_translation, options.success_rotation);
+  return m;
+}
+
+}  // namespace sgtllc::eval

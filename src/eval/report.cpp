@@ -1,0 +1,157 @@
+#include "sgtllc/eval/report.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "report_plots.h"
+
+namespace fs = std::filesystem;
+
+namespace sgtllc::eval {
+namespace {
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw Error("cannot write " + path.string());
+}
+
+fs::path prepare(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw Error("cannot create report folder " + dir + ": " + ec.message());
+  return fs::path(dir);
+}
+
+std::string prCsv(const std::vector<std::pair<std::string, const CurveMetrics*>>& curves) {
+  std::ostringstream s;
+  s << "curve,positive_distance_m,threshold,precision,recall\n";
+  for (const auto& [name, c] : curves) {
+    for (size_t k = 0; k < c->curve.precision.size(); ++k) {
+      s << name << "," << c->positive_distance << ",";
+      if (k < c->curve.thresholds.size()) s << c->curve.thresholds[k];
+      s << "," << c->curve.precision[k] << "," << c->curve.recall[k] << "\n";
+    }
+  }
+  return s.str();
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+std::string provenance(const ReportInfo& info) {
+  std::ostringstream s;
+  s << "Input: `" << info.input << "`";
+  if (!info.pairs_file.empty()) s << ", pair list `" << info.pairs_file << "`";
+  s << ".\n\n";
+  if (!info.data_note.empty()) s << info.data_note << "\n\n";
+  if (!info.command.empty()) s << "Command:\n\n```sh\n" << info.command << "\n```\n\n";
+  return s.str();
+}
+
+std::string configSection(const ReportInfo& info) {
+  return info.config_yaml.empty() ? "" : "## Configuration\n\n```yaml\n" + info.config_yaml + "```\n";
+}
+
+}  // namespace
+
+void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
+                         const EvalOptions& options, const ReportInfo& info) {
+  const fs::path out = prepare(dir);
+  writeText(out / "metrics.json", sequenceMetricsJson(m).dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+  std::vector<std::pair<std::string, const CurveMetrics*>> curves;
+  for (const CurveMetrics& c : m.pairwise) curves.emplace_back("pairwise", &c);
+  curves.emplace_back("top1", &m.top1);
+  writeText(out / "pr_curve.csv", prCsv(curves));
+
+  std::ostringstream frames;
+  frames << "frame,nodes,queried,has_revisit,loop,match,score,match_distance_m,extraction_ms,description_ms,"
+            "retrieval_ms,verification_ms,db_bytes\n";
+  for (const FrameRecord& f : run.frames) {
+    const CandidateRecord* best = f.best >= 0 ? &f.candidates[static_cast<size_t>(f.best)] : nullptr;
+    frames << f.name << "," << f.num_nodes << "," << f.queried << "," << f.has_revisit << "," << f.is_loop << ","
+           << (best ? std::to_string(best->frame) : "") << "," << (best ? best->score_t : 0.0) << ","
+           << (best ? best->distance : 0.0) << "," << f.timing.extraction_ms << "," << f.timing.description_ms << ","
+           << f.timing.retrieval_ms << "," << f.timing.verification_ms << "," << f.db_bytes << "\n";
+  }
+  writeText(out / "frames.csv", frames.str());
+
+  plotPrCurves((out / "pr_curves.png").string(), m.pairwise, &m.top1, "Precision-recall (pairwise protocol, top-15)");
+  plotTiming((out / "timing.png").string(), run);
+  plotMemory((out / "memory.png").string(), run);
+  plotTrajectory((out / "trajectory.png").string(), run, options);
+
+  const CurveMetrics& main = m.pairwise.at(0);
+  std::ostringstream md;
+  md << "# Loop-closure evaluation\n\n" << provenance(info);
+  md << "## Summary\n\n| metric | value |\n|---|---|\n"
+     << "| F1max (pairwise, positive < " << fixed(main.positive_distance, 0) << " m) | " << fixed(main.f1_max, 4)
+     << " |\n| EP | " << fixed(main.ep, 4) << " |\n| recall at 100 % precision | "
+     << fixed(main.recall_at_100_precision, 4) << " |\n| F1max / EP, top-1 per query | " << fixed(m.top1.f1_max, 4)
+     << " / " << fixed(m.top1.ep, 4) << " |\n| retrieval recall at 15 | " << fixed(m.retrieval_recall, 4)
+     << " |\n| frames / queries / queries with a revisit | " << m.n_frames << " / " << m.n_queries << " / "
+     << m.n_revisit_queries << " |\n| scored pairs: positive / negative | " << main.n_positive << " / "
+     << main.n_negative << " |\n| detected loops: true / false / 3–20 m | " << m.loops_true << " / "
+     << m.loops_false << " / " << (m.loops_detected - m.loops_true - m.loops_false)
+     << " |\n| pose success rate (RTE < " << fixed(options.success_translation, 0) << " m, RRE < "
+     << fixed(options.success_rotation, 0) << "°) | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes
+     << " of " << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3)
+     << " m / " << fixed(m.poses.rre_mean, 3) << "° |\n| ms per frame, median / p99 | "
+     << fixed(m.ms_per_frame_median, 2) << " / " << fixed(m.ms_per_frame_p99, 2)
+     << " |\n| database bytes per frame | " << fixed(m.db_bytes_per_frame, 0) << " |\n\n";
+  if (!run.contiguous) {
+    md << "Note: frame numbers are not 0, 1, 2, …; the exclusion gap counted processed frames, not frame numbers.\n\n";
+  }
+  md << "## Distance test\n\n| positive < | F1max | EP | positives |\n|---|---|---|---|\n";
+  for (const CurveMetrics& c : m.pairwise) {
+    md << "| " << fixed(c.positive_distance, 0) << " m | " << fixed(c.f1_max, 4) << " | " << fixed(c.ep, 4) << " | "
+       << c.n_positive << " |\n";
+  }
+  md << "\nNegatives are pairs farther than " << fixed(options.negative_distance, 0)
+     << " m; pairs in between are left out. No ICP overlap check is applied.\n\n"
+     << "## Plots\n\n![PR curves](pr_curves.png)\n\n![trajectory](trajectory.png)\n\n![time per frame](timing.png)"
+        "\n\n![database size](memory.png)\n\nTables: `pr_curve.csv`, `frames.csv`; numbers: `metrics.json`.\n\n"
+     << configSection(info);
+  writeText(out / "report.md", md.str());
+}
+
+void writePairListReport(const std::string& dir, const PairListRun& run, const PairListMetrics& m,
+                         const ReportInfo& info) {
+  const fs::path out = prepare(dir);
+  writeText(out / "metrics.json",
+            pairListMetricsJson(m, run, 1000).dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+  writeText(out / "pr_curve.csv", prCsv({{"pairs", &m.curve}}));
+  std::ostringstream pairs;
+  pairs << "query,candidate,label,available,loop,score,score_c,rte_m,rre_deg\n";
+  for (const PairRecord& r : run.pairs) {
+    pairs << r.pair.query << "," << r.pair.candidate << "," << r.pair.loop << "," << r.available << "," << r.is_loop
+          << "," << r.score_t << "," << r.score_c << ",";
+    if (r.pose_evaluated) pairs << r.pose_error.translation_m << "," << r.pose_error.rotation_deg;
+    else pairs << ",";
+    pairs << "\n";
+  }
+  writeText(out / "pairs.csv", pairs.str());
+  plotPrCurves((out / "pr_curves.png").string(), {m.curve}, nullptr, "Precision-recall over the listed pairs");
+
+  std::ostringstream md;
+  md << "# Loop-closure evaluation over a pair list\n\n" << provenance(info);
+  md << "| metric | value |\n|---|---|\n| pairs listed / scored | " << m.n_pairs << " / " << m.n_available
+     << " (the others name frames that are not in the input) |\n| positives / negatives scored | "
+     << m.curve.n_positive << " / " << m.curve.n_negative << " |\n| decisions equal to the label | " << m.correct
+     << " of " << m.n_available << " |\n| F1max | " << fixed(m.curve.f1_max, 4) << " |\n| EP | "
+     << fixed(m.curve.ep, 4) << " |\n| recall at 100 % precision | " << fixed(m.curve.recall_at_100_precision, 4)
+     << " |\n| pose success rate | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes << " of "
+     << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3) << " m / "
+     << fixed(m.poses.rre_mean, 3) << "° |\n\n![PR curve](pr_curves.png)\n\nPer pair: `pairs.csv`.\n\n"
+     << configSection(info);
+  writeText(out / "report.md", md.str());
+}
+
+}  // namespace sgtllc::eval

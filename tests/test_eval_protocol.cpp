@@ -1,0 +1,128 @@
+// The evaluation protocols end to end on a planted sequence of real KITTI scans with real poses, the pair-list
+// protocol on the bundled scans with the real SSC-style labels, and the eval command's report.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "sgtllc/eval/pair_eval.h"
+#include "sgtllc/eval/report.h"
+#include "test_support.h"
+
+namespace sgtllc::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PlantedSequence : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // CTest runs each test in its own process, possibly at the same time: one folder per process.
+    dir = (fs::temp_directory_path() / ("sgtllc_eval_planted_" + std::to_string(::getpid()))).string();
+    fs::remove_all(dir);
+    test::makePlantedSequence(dir);
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir); }
+  static std::string dir;
+};
+std::string PlantedSequence::dir;
+
+TEST_F(PlantedSequence, ProtocolCountsTheOneRevisit) {
+  const Config config;
+  const FrameSource source = FrameSource::semanticKitti(dir, config);
+  const GroundTruth truth = GroundTruth::fromKitti(dir + "/poses.txt", dir + "/calib.txt");
+  EvalOptions options;
+  const SequenceRun run = runSequenceEvaluation(source, truth, config, options);
+  ASSERT_EQ(run.frames.size(), 54u);
+  EXPECT_TRUE(run.contiguous);
+  const SequenceMetrics m = computeSequenceMetrics(run, options);
+  EXPECT_EQ(m.n_frames, 54);
+  EXPECT_EQ(m.n_queries, 4);          // frames 50..53 see frames up to 3 with a gap of 50
+  EXPECT_EQ(m.n_revisit_queries, 1);  // frame 53 (scan 4501) revisits frame 0 (scan 52), 2.96 m
+  EXPECT_DOUBLE_EQ(m.retrieval_recall, 1.0);
+  EXPECT_EQ(m.loops_detected, 1);
+  EXPECT_EQ(m.loops_true, 1);
+  EXPECT_EQ(m.loops_false, 0);
+  const CurveMetrics& main = m.pairwise.at(0);
+  EXPECT_EQ(main.n_positive, 1);
+  EXPECT_GT(main.n_negative, 4);
+  EXPECT_DOUBLE_EQ(main.f1_max, 1.0);
+  EXPECT_DOUBLE_EQ(main.ep, 1.0);
+  EXPECT_DOUBLE_EQ(m.top1.f1_max, 1.0);
+  // The distance test widens positives: 88 and 52 are 60+ m apart, so still one positive at 15 m.
+  ASSERT_EQ(m.pairwise.size(), 4u);
+  EXPECT_EQ(m.pairwise[3].n_positive, 1);
+  // The pose against KITTI GT, which is itself ~0.25 m off here (mostly vertical).
+  ASSERT_EQ(m.poses.evaluated, 1);
+  EXPECT_EQ(m.poses.successes, 1);
+  EXPECT_LT(m.poses.rte_mean, 0.4);
+  EXPECT_LT(m.poses.rre_mean, 1.0);
+  EXPECT_GT(m.db_bytes_per_frame, 0.0);
+  EXPECT_LT(m.db_bytes_per_frame, 16384.0);
+
+  // Same numbers at two threads.
+  options.threads = 2;
+  const SequenceMetrics two = computeSequenceMetrics(runSequenceEvaluation(source, truth, config, options), options);
+  EXPECT_EQ(two.loops_detected, m.loops_detected);
+  EXPECT_EQ(two.poses.rte_mean, m.poses.rte_mean);
+  EXPECT_EQ(two.pairwise[0].curve.precision, m.pairwise[0].curve.precision);
+  EXPECT_EQ(two.pairwise[0].curve.thresholds, m.pairwise[0].curve.thresholds);
+}
+
+TEST_F(PlantedSequence, ReportFolderHasEveryFile) {
+  const Config config;
+  const FrameSource source = FrameSource::semanticKitti(dir, config);
+  const GroundTruth truth = GroundTruth::fromKitti(dir + "/poses.txt", dir + "/calib.txt");
+  const EvalOptions options;
+  const SequenceRun run = runSequenceEvaluation(source, truth, config, options);
+  const std::string out = dir + "_report";
+  fs::remove_all(out);
+  writeSequenceReport(out, run, computeSequenceMetrics(run, options), options, ReportInfo{dir, "", "test", "", ""});
+  for (const char* f : {"report.md", "metrics.json", "pr_curve.csv", "frames.csv", "pr_curves.png", "timing.png",
+                        "memory.png", "trajectory.png"}) {
+    EXPECT_TRUE(fs::exists(fs::path(out) / f)) << f;
+    EXPECT_GT(fs::file_size(fs::path(out) / f), 100u) << f;
+  }
+  fs::remove_all(out);
+}
+
+TEST_F(PlantedSequence, FramesWithoutPosesAreAnError) {
+  const Config config;
+  const FrameSource source = FrameSource::semanticKitti(dir, config);
+  const GroundTruth short_truth(std::vector<Eigen::Matrix4d>(10, Eigen::Matrix4d::Identity()));
+  try {
+    runSequenceEvaluation(source, short_truth, config, EvalOptions{});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("'000010' has no ground-truth pose"));
+  }
+}
+
+TEST(PairListProtocol, RealKittiPairsWithScansGetTheRightAnswer) {
+  // The SSC-style list of KITTI 00 holds 004501/000052 (loop) and 000850/000088 (not); only those two have scans.
+  const std::string seq = test::dataPath("kitti/00");
+  const std::string list =
+      (fs::temp_directory_path() / ("sgtllc_pairs_real_" + std::to_string(::getpid()) + ".txt")).string();
+  std::ofstream(list) << "004501 000052 1\n000850 000088 0\n000100 000010 0\n";
+  const Config config;
+  const GroundTruth truth = GroundTruth::fromKitti(seq + "/poses.txt", seq + "/calib.txt");
+  const PairListRun run =
+      runPairListEvaluation(FrameSource::semanticKitti(seq, config), readPairList(list), truth, config, EvalOptions{});
+  fs::remove(list);
+  EXPECT_EQ(run.unavailable, 1);
+  ASSERT_EQ(run.pairs.size(), 3u);
+  EXPECT_TRUE(run.pairs[0].is_loop);
+  EXPECT_FALSE(run.pairs[1].is_loop);
+  EXPECT_FALSE(run.pairs[2].available);
+  const PairListMetrics m = computePairListMetrics(run, EvalOptions{});
+  EXPECT_EQ(m.n_available, 2);
+  EXPECT_EQ(m.correct, 2);
+  EXPECT_DOUBLE_EQ(m.curve.f1_max, 1.0);
+  EXPECT_EQ(m.poses.successes, 1);
+  EXPECT_LT(m.poses.rte_mean, 0.4);  // KITTI GT is ~0.25 m off at this revisit
+}
+
+}  // namespace
+}  // namespace sgtllc::eval
