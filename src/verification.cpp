@@ -4,6 +4,18 @@
 
 namespace sgtllc {
 
+const char* rejectionName(Rejection r) {
+  switch (r) {
+    case Rejection::kNone:
+      return "none";
+    case Rejection::kFewAssociations:
+      return "few_associations";
+    case Rejection::kRansacFailed:
+      return "ransac_failed";
+  }
+  return "?";
+}
+
 RansacParams ransacParams(const VerificationConfig& config) {
   RansacParams p;
   p.iterations = config.ransac_iterations;

@@ -20,18 +20,6 @@ struct PairOptions {
   bool force = false;
 };
 
-const char* rejectionText(Rejection r) {
-  switch (r) {
-    case Rejection::kNone:
-      return "none";
-    case Rejection::kFewAssociations:
-      return "few_associations";
-    case Rejection::kRansacFailed:
-      return "ransac_failed";
-  }
-  return "?";
-}
-
 std::vector<io::PlyEdge> graphEdges(const std::vector<Node>& nodes, const Config& config, int offset) {
   std::vector<io::PlyEdge> edges;
   const SemanticGraph g = buildGraph(nodes, config.graph);
@@ -97,7 +85,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
             << (r.is_loop ? " > " : " <= ") << "sigma_4 " << config.verification.sigma_4 << "   score_c "
             << fixed(m.score_c, 3) << "\n";
   std::cout << "associations " << m.associations.size() << ", inliers " << m.inliers.size();
-  if (m.rejection != Rejection::kNone) std::cout << "   (rejected: " << rejectionText(m.rejection) << ")";
+  if (m.rejection != Rejection::kNone) std::cout << "   (rejected: " << rejectionName(m.rejection) << ")";
   std::cout << "\n";
   if (m.rejection == Rejection::kNone) {
     std::cout << "T_match_query (maps query points into the match frame):\n" << matrixText(m.T_match_query, "  ");
@@ -126,7 +114,7 @@ void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
                               {"loop", r.is_loop},
                               {"score", m.score_t},
                               {"score_c", m.score_c},
-                              {"rejection", rejectionText(m.rejection)},
+                              {"rejection", rejectionName(m.rejection)},
                               {"nodes_query", r.query_nodes.size()},
                               {"nodes_match", r.match_nodes.size()},
                               {"associations", m.associations.size()},

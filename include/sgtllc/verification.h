@@ -20,6 +20,9 @@ enum class Rejection {
   kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (spec §7.2)
 };
 
+/// "none", "few_associations" or "ransac_failed", as printed by the CLI and written to reports.
+const char* rejectionName(Rejection r);
+
 /// Outcome of comparing a query frame with one candidate ("match") frame.
 struct MatchResult {
   std::vector<NodeMatch> associations;  ///< LA, in query-node order

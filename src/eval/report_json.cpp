@@ -3,18 +3,6 @@
 namespace sgtllc::eval {
 namespace {
 
-const char* rejectionName(Rejection r) {
-  switch (r) {
-    case Rejection::kNone:
-      return "none";
-    case Rejection::kFewAssociations:
-      return "few_associations";
-    case Rejection::kRansacFailed:
-      return "ransac_failed";
-  }
-  return "?";
-}
-
 Json curveJson(const CurveMetrics& c) {
   return {{"positive_distance_m", c.positive_distance}, {"f1_max", c.f1_max}, {"ep", c.ep},
           {"recall_at_100_precision", c.recall_at_100_precision}, {"n_positive", c.n_positive},
