@@ -9,6 +9,7 @@
 
 #include "sgtllc/eval/pair_eval.h"
 #include "sgtllc/eval/report.h"
+#include "sgtllc/io/nodes.h"
 #include "test_support.h"
 
 namespace sgtllc::eval {
@@ -86,6 +87,28 @@ TEST_F(PlantedSequence, ReportFolderHasEveryFile) {
     EXPECT_GT(fs::file_size(fs::path(out) / f), 100u) << f;
   }
   fs::remove_all(out);
+}
+
+TEST_F(PlantedSequence, NodeFilesGiveTheSameMetricsAsScans) {
+  // The same frames as node files (what a user with their own object extraction provides).
+  const Config config;
+  const FrameSource scans = FrameSource::semanticKitti(dir, config);
+  const std::string nodes_dir = dir + "_nodes";
+  fs::create_directories(nodes_dir);
+  for (size_t i = 0; i < scans.size(); ++i) {
+    io::writeNodesTxt(nodes_dir + "/" + scans.name(i) + ".txt", scans.load(i).nodes);
+  }
+  const GroundTruth truth = GroundTruth::fromKitti(dir + "/poses.txt", dir + "/calib.txt");
+  const EvalOptions options;
+  const SequenceMetrics a = computeSequenceMetrics(runSequenceEvaluation(scans, truth, config, options), options);
+  const SequenceMetrics b = computeSequenceMetrics(
+      runSequenceEvaluation(FrameSource::nodeFiles(nodes_dir, config), truth, config, options), options);
+  fs::remove_all(nodes_dir);
+  EXPECT_EQ(a.pairwise[0].curve.precision, b.pairwise[0].curve.precision);
+  EXPECT_EQ(a.pairwise[0].curve.thresholds, b.pairwise[0].curve.thresholds);
+  EXPECT_EQ(a.loops_true, b.loops_true);
+  EXPECT_EQ(a.poses.rte_mean, b.poses.rte_mean);
+  EXPECT_THROW(FrameSource::nodeFiles(nodes_dir, config), Error);  // gone
 }
 
 TEST_F(PlantedSequence, FramesWithoutPosesAreAnError) {
