@@ -15,6 +15,16 @@ std::string format(const char* fmt, double a, double b = 0.0) {
   return buf;
 }
 
+/// The curve from recall 0 upwards: sklearn's appended (recall 0, precision 1) point first, then the thresholds
+/// from the highest, so the line never jumps back across the plot.
+void addCurve(plot::Figure& fig, const PrCurve& c, const std::string& label, plot::Color color, double width,
+              bool dashed) {
+  std::vector<double> r = {c.recall.back()}, p = {c.precision.back()};
+  r.insert(r.end(), c.recall.begin(), c.recall.end() - 1);
+  p.insert(p.end(), c.precision.begin(), c.precision.end() - 1);
+  fig.line(r, p, label, color, width, dashed);
+}
+
 }  // namespace
 
 void plotPrCurves(const std::string& path, const std::vector<CurveMetrics>& pairwise, const CurveMetrics* top1,
@@ -28,13 +38,11 @@ void plotPrCurves(const std::string& path, const std::vector<CurveMetrics>& pair
   fig.legendAt("lower left");
   for (size_t k = 0; k < pairwise.size(); ++k) {
     const CurveMetrics& c = pairwise[k];
-    fig.line(c.curve.recall, c.curve.precision,
-             format("pairs, positive < %.0f m (F1max %.3f)", c.positive_distance, c.f1_max),
-             plot::seriesColor(static_cast<int>(k)), 2.5);
+    addCurve(fig, c.curve, format("pairs, positive < %.0f m (F1max %.3f)", c.positive_distance, c.f1_max),
+             plot::seriesColor(static_cast<int>(k)), 2.5, false);
   }
   if (top1) {
-    fig.line(top1->curve.recall, top1->curve.precision,
-             format("top-1 per query, < %.0f m (F1max %.3f)", top1->positive_distance, top1->f1_max),
+    addCurve(fig, top1->curve, format("top-1 per query, < %.0f m (F1max %.3f)", top1->positive_distance, top1->f1_max),
              plot::Color{0.1, 0.1, 0.1}, 2.0, true);
   }
   fig.savePng(path);
