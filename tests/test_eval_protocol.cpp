@@ -81,7 +81,8 @@ TEST_F(PlantedSequence, ReportFolderHasEveryFile) {
   const std::string out = dir + "_report";
   fs::remove_all(out);
   writeSequenceReport(out, run, computeSequenceMetrics(run, options), options, ReportInfo{dir, "", "test", "", ""});
-  for (const char* f : {"report.md", "metrics.json", "pr_curve.csv", "frames.csv", "pr_curves.png", "timing.png",
+  for (const char* f : {"report.md", "metrics.json", "pr_curve.csv", "frames.csv", "candidates.csv", "pr_curves.png",
+                        "timing.png",
                         "memory.png", "trajectory.png"}) {
     EXPECT_TRUE(fs::exists(fs::path(out) / f)) << f;
     EXPECT_GT(fs::file_size(fs::path(out) / f), 100u) << f;

@@ -83,6 +83,16 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   }
   writeText(out / "frames.csv", frames.str());
 
+  std::ostringstream pairs;
+  pairs << "query,candidate,distance_m,score,score_c,rejection\n";
+  for (const FrameRecord& f : run.frames) {
+    for (const CandidateRecord& c : f.candidates) {
+      pairs << f.frame << "," << c.frame << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
+            << rejectionName(c.rejection) << "\n";
+    }
+  }
+  writeText(out / "candidates.csv", pairs.str());
+
   plotPrCurves((out / "pr_curves.png").string(), m.pairwise, &m.top1, "Precision-recall (pairwise protocol, top-15)");
   plotTiming((out / "timing.png").string(), run);
   plotMemory((out / "memory.png").string(), run);
@@ -117,7 +127,8 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   md << "\nNegatives are pairs farther than " << fixed(options.negative_distance, 0)
      << " m; pairs in between are left out. No ICP overlap check is applied.\n\n"
      << "## Plots\n\n![PR curves](pr_curves.png)\n\n![trajectory](trajectory.png)\n\n![time per frame](timing.png)"
-        "\n\n![database size](memory.png)\n\nTables: `pr_curve.csv`, `frames.csv`; numbers: `metrics.json`.\n\n"
+        "\n\n![database size](memory.png)\n\nTables: `pr_curve.csv`, `frames.csv`, `candidates.csv` (every scored "
+        "pair); numbers: `metrics.json`.\n\n"
      << configSection(info);
   writeText(out / "report.md", md.str());
 }

@@ -31,8 +31,8 @@ Json sequenceMetricsJson(const SequenceMetrics& m);
 /// @p list_limit pairs, every pair's result.
 Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_t list_limit = 100);
 
-/// Writes report.md, metrics.json, pr_curve.csv, frames.csv and pr_curves.png, timing.png, memory.png,
-/// trajectory.png into @p dir (created if needed). Throws sgtllc::Error naming a file that cannot be written.
+/// Writes report.md, metrics.json, pr_curve.csv, frames.csv, candidates.csv and pr_curves.png, timing.png,
+/// memory.png, trajectory.png into @p dir (created if needed). Throws sgtllc::Error naming a file that cannot be written.
 void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
                          const EvalOptions& options, const ReportInfo& info);
 /// Writes report.md, metrics.json, pr_curve.csv, pairs.csv and pr_curves.png into @p dir.
