@@ -1,8 +1,158 @@
-// `sgtllc simulate`: placeholder until the simulator lands.
+// `sgtllc simulate --out DIR --frames N --seed S`: writes a simulated SemanticKITTI-layout sequence with revisits.
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <thread>
+
 #include "commands.h"
+#include "common.h"
+#include "sgtllc/sim/preview.h"
+#include "sgtllc/sim/sequence_writer.h"
 
 namespace sgtllc::cli {
+namespace {
 
-void addSimulateCommand(CLI::App&) {}
+namespace fs = std::filesystem;
+
+struct SimulateOptions {
+  std::string out;
+  int frames = 0;
+  uint64_t seed = 1;
+  std::string scene = "urban";
+  std::string sensor = "hdl64";
+  int accumulate = 0;
+  double label_noise = sim::kDefaultLabelNoise;
+  int revisits = -1;
+  int threads = 0;
+  bool force = false;
+  bool no_preview = false;
+};
+
+template <typename T>
+T percentile(std::vector<T> v, double q) {
+  if (v.empty()) return T{};
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5))];
+}
+
+std::vector<int> totals(const std::vector<std::array<int, kNumClasses>>& nodes) {
+  std::vector<int> out;
+  for (const auto& n : nodes) out.push_back(std::accumulate(n.begin(), n.end(), 0));
+  return out;
+}
+
+std::string shares(const std::map<uint16_t, uint64_t>& classes) {
+  uint64_t total = 0;
+  std::vector<std::pair<uint64_t, uint16_t>> sorted;
+  for (const auto& [id, c] : classes) {
+    total += c;
+    sorted.push_back({c, id});
+  }
+  std::sort(sorted.rbegin(), sorted.rend());
+  std::string s;
+  for (const auto& [c, id] : sorted) {
+    if (!s.empty()) s += ", ";
+    s += std::string(sim::semanticName(id)) + " " + fixed(100.0 * c / std::max<uint64_t>(1, total), 1) + "%";
+  }
+  return s;
+}
+
+void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const std::string& out, double seconds) {
+  const auto& pts = st.points;
+  const double mean = pts.empty() ? 0.0 : std::accumulate(pts.begin(), pts.end(), 0.0) / pts.size();
+  std::cout << "wrote " << st.frames << " frames to " << out << " (" << sim::sceneName(s.config().scene) << ", "
+            << sim::sensorName(s.config().sensor.kind) << ", seed " << s.config().seed << ", label noise "
+            << fixed(s.config().label_noise, 2) << ") in " << fixed(seconds, 1) << " s, "
+            << fixed(st.frames / std::max(seconds, 1e-9), 1) << " frames/s\n";
+  std::cout << "points per frame: mean " << fixed(mean, 0) << ", min " << percentile(pts, 0.0) << ", max "
+            << percentile(pts, 1.0) << "\n";
+  std::cout << "labels written: " << shares(st.class_points) << "\n";
+  if (!st.nodes.empty()) {
+    const std::vector<int> noisy = totals(st.nodes), truth = totals(st.true_nodes);
+    std::cout << "graph nodes per frame (default clustering, " << noisy.size() << " frames sampled): median "
+              << percentile(noisy, 0.5) << " (10-90%: " << percentile(noisy, 0.1) << "-" << percentile(noisy, 0.9)
+              << "); with true labels " << percentile(truth, 0.5) << "\n";
+  }
+  std::cout << "revisits: " << s.config().plannedRevisits() << " planned; " << st.query_frames
+            << " frames have a loop within 3 m (" << st.opposite_queries << " facing the other way)";
+  if (!st.lane_shift_offsets.empty()) {
+    std::cout << "; " << st.lane_shift_offsets.size() << " frames one or two lanes aside, "
+              << fixed(percentile(st.lane_shift_offsets, 0.5), 1) << " m from the earlier pass (median)";
+  }
+  std::cout << "\nframes by visit:";
+  for (const auto& [kind, count] : st.frames_by_kind) std::cout << " " << sim::visitKindName(kind) << " " << count << ";";
+  std::cout << "\nloop_pairs.txt: " << st.positives << " loops, " << st.negatives << " non-loops\n";
+}
+
+void simulate(const SimulateOptions& o) {
+  sim::SimConfig config;
+  config.frames = o.frames;
+  config.seed = o.seed;
+  config.scene = sim::parseSceneKind(o.scene);
+  config.sensor = sim::SensorConfig::preset(sim::parseSensorKind(o.sensor));
+  config.accumulate = o.accumulate;
+  config.label_noise = o.label_noise;
+  config.revisits = o.revisits;
+  // Check the folder before minutes of work; writeSequence checks again when it starts writing.
+  sim::prepareOutputDir(o.out, o.force);
+  const auto start = std::chrono::steady_clock::now();
+  const sim::Simulator simulator(config);
+  sim::WriteOptions w;
+  w.dir = o.out;
+  w.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  w.force = true;  // the folder was checked above and may now hold our own empty subfolders
+  w.previews = !o.no_preview;
+  Progress progress("frames", static_cast<size_t>(config.frames));
+  const sim::SequenceStats stats =
+      sim::writeSequence(simulator, w, [&](int done) { progress.update(static_cast<size_t>(done), ""); });
+  progress.finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  printSummary(simulator, stats, o.out, seconds);
+  // --force never deletes: frames of an earlier, longer run stay and would be read as part of this sequence.
+  size_t stale = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(o.out) / "velodyne")) {
+    const std::string stem = entry.path().stem().string();
+    const bool ours = stem.size() == 6 && std::all_of(stem.begin(), stem.end(), ::isdigit) &&
+                      std::stoi(stem) < stats.frames;
+    if (entry.path().extension() == ".bin" && !ours) ++stale;
+  }
+  if (stale > 0) {
+    std::cerr << "warning: " << o.out << "/velodyne holds " << stale
+              << " other .bin files (not written by this run); readers of the folder will take them as frames\n";
+  }
+}
+
+}  // namespace
+
+void addSimulateCommand(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand("simulate", "Write a simulated semantic LiDAR sequence with revisits "
+                                                 "(SemanticKITTI layout, ground-truth poses and loop pairs)");
+  cmd->add_option("--out", o->out, "output folder (new or empty; see --force)")->required();
+  cmd->add_option("--frames", o->frames, "frames to simulate (10 Hz)")->required()->check(CLI::Range(1, 1000000));
+  cmd->add_option("--seed", o->seed, "random seed: the same seed gives the same files")->required();
+  cmd->add_option("--scene", o->scene, "world preset")->check(CLI::IsMember({"urban", "suburban", "rural"}))
+      ->capture_default_str();
+  cmd->add_option("--sensor", o->sensor, "LiDAR: Velodyne HDL-64E or Livox Mid-70")
+      ->check(CLI::IsMember({"hdl64", "mid70"}))
+      ->capture_default_str();
+  cmd->add_option("--accumulate", o->accumulate, "raw scans merged into each frame (default: hdl64 1, mid70 10)")
+      ->check(CLI::Range(1, 100));
+  cmd->add_option("--label-noise", o->label_noise,
+                  "segmentation error rate R: 0 = ground truth; the default is like RangeNet++")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--revisits", o->revisits, "planned revisits (default: one per 500 frames)")
+      ->check(CLI::Range(0, 10000));
+  cmd->add_option("--threads", o->threads, "worker threads (default: all cores); the output does not depend on it")
+      ->check(CLI::Range(1, kMaxThreads));
+  cmd->add_flag("--force", o->force, "write into a non-empty folder, overwriting only the simulator's own files");
+  cmd->add_flag("--no-preview", o->no_preview, "skip preview_scan.png and preview_trajectory.png");
+  cmd->callback([o] { simulate(*o); });
+}
 
 }  // namespace sgtllc::cli

@@ -1,0 +1,45 @@
+/// @file route.h
+/// @brief Where the vehicle drives: a walk over the road graph that explores, then comes back to stretches it has
+///        driven before, in the same direction, the opposite direction, or one or two lanes aside.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sgtllc/sim/road_network.h"
+
+namespace sgtllc::sim {
+
+/// Why a leg is driven.
+enum class VisitKind : uint8_t {
+  kExplore,            ///< new ground (or driven again by chance)
+  kTransfer,           ///< on the way to a planned revisit
+  kSameDirection,      ///< revisit, same lane and direction
+  kOppositeDirection,  ///< revisit the other way round
+  kLaneShift1,         ///< revisit, same direction, one lane towards the centre line
+  kLaneShift2,         ///< revisit, same direction, two lanes aside (avenues)
+};
+const char* visitKindName(VisitKind kind);
+inline bool isRevisit(VisitKind k) { return k != VisitKind::kExplore && k != VisitKind::kTransfer; }
+
+/// One road driven end to end.
+struct Leg {
+  int edge = 0;
+  bool forward = true;  ///< from node a to node b
+  double offset = 0.0;  ///< lateral position, metres right of the centre line in the direction of travel
+  VisitKind kind = VisitKind::kExplore;
+  int source = -1;      ///< revisits: index of the leg driven before on the same road
+};
+
+/// Usual lateral position: near the middle of a one-lane-per-direction street, the outer lane of an avenue.
+double defaultOffset(const RoadProfile& profile);
+
+/// A route of at least @p length metres with @p revisits planned revisits (fewer if the route is too short for
+/// them: each is at least 80 m). Every round of four revisits drives each kind (same direction, opposite, one and
+/// two lanes aside) once, the one whose stretch is cheapest to reach first; two lanes need an avenue.
+std::vector<Leg> planRoute(const RoadNetwork& net, double length, int revisits, uint64_t seed);
+
+/// Length of a leg (m).
+inline double legLength(const RoadNetwork& net, const Leg& leg) { return net.edges()[leg.edge].length(); }
+
+}  // namespace sgtllc::sim

@@ -1,0 +1,71 @@
+/// @file simulator.h
+/// @brief The simulator's front door: a world, a route with revisits and the sensor, producing labelled scans.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sgtllc/sim/label_noise.h"
+#include "sgtllc/sim/route.h"
+#include "sgtllc/sim/scene.h"
+#include "sgtllc/sim/sensor.h"
+#include "sgtllc/sim/trajectory.h"
+#include "sgtllc/sim/world.h"
+
+namespace sgtllc::sim {
+
+/// Everything a simulated sequence depends on. The same config gives the same bytes.
+struct SimConfig {
+  int frames = 100;                         ///< frames of the sequence (10 Hz)
+  uint64_t seed = 1;                        ///< seeds every random choice
+  SceneKind scene = SceneKind::kUrban;      ///< world preset
+  SensorConfig sensor;                      ///< HDL-64E by default
+  int accumulate = 0;                       ///< raw scans merged into each frame; 0 = sensor default (HDL-64 1, Mid-70 10)
+  double label_noise = kDefaultLabelNoise;  ///< segmentation error rate R (0 = ground-truth labels)
+  int revisits = -1;                        ///< planned revisits; −1 = one per 500 frames (at least one)
+  double sensor_height = 1.73;              ///< m above the road
+
+  /// Throws sgtllc::Error naming the first bad field.
+  void validate() const;
+  /// Raw scans per frame after defaults are applied.
+  int scansPerFrame() const;
+  /// Planned revisits after defaults are applied.
+  int plannedRevisits() const;
+};
+
+/// One output frame in its own LiDAR frame.
+struct SimFrame {
+  std::vector<Eigen::Vector3f> points;
+  std::vector<float> intensity;
+  std::vector<uint32_t> labels;       ///< written labels (with label noise)
+  std::vector<uint32_t> true_labels;  ///< ground truth
+};
+
+class Simulator {
+ public:
+  /// Generates the world, plans the route and drives it (about a second for a 2,000-frame urban sequence).
+  explicit Simulator(const SimConfig& config);
+
+  const SimConfig& config() const { return config_; }
+  const World& world() const { return world_; }
+  const SensorModel& sensor() const { return sensor_; }
+  const std::vector<Leg>& route() const { return route_; }
+  /// One pose per frame (size() == config().frames).
+  const std::vector<FramePose>& poses() const { return poses_; }
+  int numFrames() const { return static_cast<int>(poses_.size()); }
+
+  /// Frame @p i: raw scans max(0, i − scansPerFrame() + 1) … i merged in the LiDAR frame of frame i (so the first
+  /// frames of an accumulating sensor hold fewer scans). Pure and thread-safe: any thread may compute any frame.
+  SimFrame frame(int i) const;
+
+ private:
+  SimConfig config_;
+  SensorModel sensor_;
+  World world_;
+  std::vector<Leg> route_;
+  std::vector<FramePose> poses_;
+};
+
+}  // namespace sgtllc::sim

@@ -1,0 +1,188 @@
+#include "sgtllc/sim/sequence_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <numeric>
+
+#include <Eigen/LU>
+
+#include "sgtllc/config.h"
+#include "sgtllc/io/kitti.h"
+#include "sgtllc/io/kitti_write.h"
+#include "sgtllc/node_extraction.h"
+#include "sgtllc/parallel.h"
+#include "sgtllc/sim/preview.h"
+
+namespace sgtllc::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string frameName(int i) {
+  char buf[16];
+  std::snprintf(buf, sizeof(buf), "%06d", i);
+  return buf;
+}
+
+/// Per-frame results a worker hands back (filled in its own slot; merged in frame order).
+struct FrameSlot {
+  uint32_t points = 0;
+  std::map<uint16_t, uint64_t> classes, true_classes;
+  bool sampled = false;
+  std::array<int, kNumClasses> nodes{}, true_nodes{};
+  std::exception_ptr error;
+};
+
+std::array<int, kNumClasses> nodesPerClass(const NodeExtractor& extractor, const SimFrame& f, bool truth) {
+  LabeledCloud cloud;
+  cloud.points = f.points;
+  cloud.labels = truth ? f.true_labels : f.labels;
+  std::array<int, kNumClasses> count{};
+  for (const Node& n : extractor.extract(cloud).nodes) ++count[n.label];
+  return count;
+}
+
+/// Revisit figures from the poses (frame 0 frame) and the positive pairs.
+void revisitStats(const Simulator& sim, const std::vector<Eigen::Matrix4d>& poses, const std::vector<LoopPair>& pairs,
+                  int min_gap, SequenceStats& s) {
+  int last_query = -1;
+  bool last_opposite = false;
+  for (const LoopPair& p : pairs) {
+    if (!p.loop) continue;
+    // Forward axes (first rotation column) of the two frames, compared in the ground plane.
+    const Eigen::Vector2d fq = poses[p.query].block<2, 1>(0, 0).normalized();
+    const Eigen::Vector2d fc = poses[p.candidate].block<2, 1>(0, 0).normalized();
+    const bool opposite = fq.dot(fc) < std::cos(135.0 * M_PI / 180.0);
+    if (p.query != last_query) {
+      s.opposite_queries += last_opposite;
+      ++s.query_frames;
+      last_query = p.query;
+      last_opposite = false;
+    }
+    last_opposite = last_opposite || opposite;
+  }
+  s.opposite_queries += last_opposite;
+  for (int i = 0; i < sim.numFrames(); ++i) {
+    const VisitKind kind = sim.poses()[i].kind;
+    ++s.frames_by_kind[kind];
+    if (kind != VisitKind::kLaneShift1 && kind != VisitKind::kLaneShift2) continue;
+    double nearest = 1e300;
+    for (int c = 0; c + min_gap <= i; ++c) {
+      nearest = std::min(nearest, (poses[i].topRightCorner<3, 1>() - poses[c].topRightCorner<3, 1>()).norm());
+    }
+    if (nearest < 1e300) s.lane_shift_offsets.push_back(nearest);
+  }
+}
+
+}  // namespace
+
+void prepareOutputDir(const std::string& dir, bool force) {
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) throw Error("cannot write to " + dir + ": it is a file, not a folder");
+    if (!force && fs::directory_iterator(dir, ec) != fs::directory_iterator()) {
+      throw Error(dir + " is not empty; choose an empty or new folder, or pass --force to overwrite the simulator's "
+                        "files in it (nothing else is touched)");
+    }
+    if (ec) throw Error("cannot read folder " + dir + ": " + ec.message());
+  }
+  for (const fs::path& p : {fs::path(dir), fs::path(dir) / "velodyne", fs::path(dir) / "labels"}) {
+    fs::create_directories(p, ec);
+    if (ec || !fs::is_directory(p)) throw Error("cannot create folder " + p.string() + ": " + ec.message());
+  }
+}
+
+std::vector<Eigen::Matrix4d> readBackLidarPoses(const std::string& dir) {
+  return io::lidarPoses(io::readKittiPoses(dir + "/poses.txt"), io::readKittiCalibTr(dir + "/calib.txt"));
+}
+
+SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
+                            const std::function<void(int)>& progress) {
+  prepareOutputDir(options.dir, options.force);
+  const std::string& dir = options.dir;
+  const int n = sim.numFrames();
+
+  // Poses in the KITTI convention: cam0 of frame i in cam0 of frame 0, P_i = Tr · T_lidar0_lidari · Tr⁻¹.
+  const Eigen::Matrix4d Tr = io::kittiVelodyneToCam0();
+  const Eigen::Matrix4d Tr_inv = Tr.inverse();
+  const Eigen::Matrix4d world_to_0 = sim.poses()[0].T_world_lidar.inverse();
+  std::vector<Eigen::Matrix4d> cam(n);
+  std::vector<double> times(n);
+  for (int i = 0; i < n; ++i) {
+    cam[i] = Tr * (world_to_0 * sim.poses()[i].T_world_lidar) * Tr_inv;
+    times[i] = sim.poses()[i].time;
+  }
+  io::writeKittiCalib(dir + "/calib.txt", io::kittiProjections(), Tr);
+  io::writeKittiPoses(dir + "/poses.txt", cam);
+  io::writeKittiTimes(dir + "/times.txt", times);
+  LoopPairOptions pair_options;
+  pair_options.seed = sim.config().seed;
+  const std::vector<Eigen::Matrix4d> lidar = readBackLidarPoses(dir);
+  const std::vector<LoopPair> pairs = loopPairs(lidar, pair_options);
+  writeLoopPairs(dir + "/loop_pairs.txt", pairs);
+
+  SequenceStats stats;
+  stats.frames = n;
+  for (const LoopPair& p : pairs) ++(p.loop ? stats.positives : stats.negatives);
+  revisitStats(sim, lidar, pairs, pair_options.min_gap, stats);
+
+  const Config defaults;
+  const NodeExtractor extractor(defaults.cluster, defaults.labels);
+  const int threads = std::max(1, options.threads);
+  const int batch = 4 * threads;
+  std::vector<FrameSlot> slots;
+  for (int first = 0; first < n; first += batch) {
+    const int count = std::min(batch, n - first);
+    slots.assign(static_cast<size_t>(count), FrameSlot{});
+    parallelFor(count, threads, [&](int k) {
+      FrameSlot& slot = slots[static_cast<size_t>(k)];
+      const int i = first + k;
+      try {
+        const SimFrame f = sim.frame(i);
+        io::writeKittiBin(dir + "/velodyne/" + frameName(i) + ".bin", f.points, f.intensity);
+        io::writeLabelFile(dir + "/labels/" + frameName(i) + ".label", f.labels);
+        slot.points = static_cast<uint32_t>(f.points.size());
+        for (uint32_t w : f.labels) ++slot.classes[static_cast<uint16_t>(w & 0xFFFF)];
+        for (uint32_t w : f.true_labels) ++slot.true_classes[static_cast<uint16_t>(w & 0xFFFF)];
+        if (options.node_stats_every > 0 && i % options.node_stats_every == 0) {
+          slot.sampled = true;
+          slot.nodes = nodesPerClass(extractor, f, false);
+          slot.true_nodes = nodesPerClass(extractor, f, true);
+        }
+      } catch (...) {
+        slot.error = std::current_exception();
+      }
+    });
+    for (FrameSlot& slot : slots) {
+      if (slot.error) std::rethrow_exception(slot.error);
+      stats.points.push_back(slot.points);
+      for (const auto& [id, c] : slot.classes) stats.class_points[id] += c;
+      for (const auto& [id, c] : slot.true_classes) stats.true_class_points[id] += c;
+      if (slot.sampled) {
+        stats.nodes.push_back(slot.nodes);
+        stats.true_nodes.push_back(slot.true_nodes);
+      }
+    }
+    if (progress) progress(first + count);
+  }
+  if (options.previews) {
+    // The scan shown is a typical one: the sampled frame with the median number of graph nodes (true labels).
+    std::vector<std::pair<int, int>> by_nodes;  // (nodes, frame)
+    for (size_t k = 0; k < stats.true_nodes.size(); ++k) {
+      by_nodes.push_back({std::accumulate(stats.true_nodes[k].begin(), stats.true_nodes[k].end(), 0),
+                          static_cast<int>(k) * options.node_stats_every});
+    }
+    std::sort(by_nodes.begin(), by_nodes.end());
+    const int preview = by_nodes.empty() ? n / 2 : by_nodes[by_nodes.size() / 2].second;
+    writeScanPreview(dir + "/preview_scan.png", sim.frame(preview),
+                     "frame " + frameName(preview) + " (" + sceneName(sim.config().scene) + ", " +
+                         sensorName(sim.config().sensor.kind) + "), coloured by label");
+    writeTrajectoryPreview(dir + "/preview_trajectory.png", sim, lidar, pairs);
+  }
+  return stats;
+}
+
+}  // namespace sgtllc::sim

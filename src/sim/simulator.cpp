@@ -1,0 +1,101 @@
+#include "sgtllc/sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/LU>
+
+#include "sgtllc/sim/raycast.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc::sim {
+namespace {
+
+constexpr double kPeriod = 0.1;     // s (10 Hz)
+constexpr int kMaxFrames = 1000000;
+constexpr int kPlanAttempts = 4;    // each replans a route 1.5 times longer if driving it ran out of road
+
+const SimConfig& validated(const SimConfig& config) {
+  config.validate();
+  return config;
+}
+
+}  // namespace
+
+void SimConfig::validate() const {
+  if (frames < 1 || frames > kMaxFrames) {
+    throw Error("frames must be 1.." + std::to_string(kMaxFrames) + ", not " + std::to_string(frames));
+  }
+  if (accumulate < 0 || accumulate > 100) throw Error("accumulate must be 0..100, not " + std::to_string(accumulate));
+  if (!(label_noise >= 0.0 && label_noise <= 1.0)) {
+    throw Error("label noise must be between 0 and 1, not " + std::to_string(label_noise));
+  }
+  if (revisits < -1 || revisits > 10000) throw Error("revisits must be 0..10000, not " + std::to_string(revisits));
+  if (!(sensor_height > 0.5 && sensor_height < 5.0)) {
+    throw Error("sensor height must be 0.5..5 m, not " + std::to_string(sensor_height));
+  }
+  if (!(sensor.max_range > sensor.min_range && sensor.min_range >= 0.0)) throw Error("sensor range limits are invalid");
+  if (!(sensor.range_noise >= 0.0) || !(sensor.dropout >= 0.0 && sensor.dropout < 1.0)) {
+    throw Error("sensor noise settings are invalid");
+  }
+}
+
+int SimConfig::scansPerFrame() const {
+  if (accumulate > 0) return accumulate;
+  return sensor.kind == SensorKind::kMid70 ? 10 : 1;
+}
+
+int SimConfig::plannedRevisits() const {
+  return revisits >= 0 ? revisits : std::max(1, static_cast<int>(std::lround(frames / 500.0)));
+}
+
+Simulator::Simulator(const SimConfig& config) : config_(validated(config)), sensor_(config_.sensor) {
+  const ScenePreset preset = scenePreset(config.scene);
+  TrajectoryConfig drive;
+  drive.frames = config.frames;
+  drive.period = kPeriod;
+  drive.sensor_height = config.sensor_height;
+  drive.speed_min = preset.speed_min;
+  drive.speed_max = preset.speed_max;
+  drive.seed = config.seed;
+  // Turns slow the vehicle down: expect ~85 % of the mean cruise speed.
+  double length = config.frames * kPeriod * 0.85 * 0.5 * (preset.speed_min + preset.speed_max);
+  for (int attempt = 0; attempt < kPlanAttempts; ++attempt, length *= 1.5) {
+    WorldConfig wc;
+    wc.preset = preset;
+    wc.seed = config.seed;
+    wc.blocks_x = wc.blocks_y = blocksForRoute(preset, length);
+    wc.duration = config.frames * kPeriod;
+    world_ = generateWorld(wc);
+    route_ = planRoute(world_.roads, length, config.plannedRevisits(), config.seed);
+    poses_ = driveRoute(world_, route_, drive);
+    if (numFrames() == config.frames) return;
+  }
+  throw Error("could not plan a route long enough for " + std::to_string(config.frames) + " frames");
+}
+
+SimFrame Simulator::frame(int i) const {
+  if (i < 0 || i >= numFrames()) throw Error("frame " + std::to_string(i) + " is out of range");
+  SimFrame out;
+  const Eigen::Matrix4d world_to_i = poses_[i].T_world_lidar.inverse();
+  const int first = std::max(0, i - config_.scansPerFrame() + 1);
+  for (int j = first; j <= i; ++j) {
+    const FramePose& pose = poses_[j];
+    const RawScan raw = castScan(world_, sensor_, pose.T_world_lidar, pose.time, j, config_.seed);
+    const std::vector<uint32_t> labels = predictLabels(raw, config_.label_noise, config_.seed, j);
+    const std::vector<uint32_t> truth = trueLabels(raw);
+    const Eigen::Matrix4d T = world_to_i * pose.T_world_lidar;  // scan j into frame i
+    const Eigen::Matrix3f R = T.topLeftCorner<3, 3>().cast<float>();
+    const Eigen::Vector3f t = T.topRightCorner<3, 1>().cast<float>();
+    for (size_t k = 0; k < raw.points.size(); ++k) {
+      out.points.push_back(j == i ? raw.points[k] : Eigen::Vector3f(R * raw.points[k] + t));
+    }
+    out.intensity.insert(out.intensity.end(), raw.intensity.begin(), raw.intensity.end());
+    out.labels.insert(out.labels.end(), labels.begin(), labels.end());
+    out.true_labels.insert(out.true_labels.end(), truth.begin(), truth.end());
+  }
+  return out;
+}
+
+}  // namespace sgtllc::sim

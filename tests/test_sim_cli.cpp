@@ -1,0 +1,102 @@
+// `sgtllc simulate`: writes a readable sequence, and refuses bad values and non-empty folders with a clear message.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "sgtllc/io/sequence.h"
+
+namespace sgtllc {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+struct CliResult {
+  int status = -1;
+  std::string out;  // stdout and stderr together
+};
+
+/// Runs `sgtllc simulate ARGS`, capturing its output in a file of this process.
+CliResult simulate(const std::string& args) {
+  const fs::path log = fs::temp_directory_path() / ("sgtllc_sim_cli_" + std::to_string(::getpid()) + ".log");
+  const int st = std::system((std::string(SGTLLC_CLI) + " simulate " + args + " > " + log.string() + " 2>&1").c_str());
+  std::ifstream in(log);
+  CliResult r{WIFEXITED(st) ? WEXITSTATUS(st) : -1, std::string(std::istreambuf_iterator<char>(in), {})};
+  fs::remove(log);
+  return r;
+}
+
+class SimCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sgtllc_sim_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+TEST_F(SimCli, WritesAReadableSequenceAndASummary) {
+  const CliResult r = simulate("--out " + path("seq") + " --frames 3 --seed 4 --threads 2 --no-preview");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("wrote 3 frames"));
+  EXPECT_THAT(r.out, HasSubstr("points per frame"));
+  const io::SequenceDir seq(path("seq"));
+  EXPECT_EQ(seq.size(), 3u);
+  EXPECT_GT(seq.load(2).points.size(), 90000u);
+  EXPECT_FALSE(fs::exists(path("seq/preview_scan.png")));
+}
+
+TEST_F(SimCli, BadValuesExitWithUsageErrors) {
+  for (const char* args : {"--frames 3 --seed 1 --scene downtown", "--frames 0 --seed 1",
+                           "--frames 3 --seed 1 --label-noise 2", "--frames 3 --seed 1 --sensor vlp16",
+                           "--frames 3 --seed 1 --accumulate 0", "--frames 3 --seed 1 --threads 0", "--frames 3"}) {
+    const CliResult r = simulate("--out " + path("seq") + " " + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
+    EXPECT_FALSE(fs::exists(path("seq"))) << args;
+  }
+  const CliResult r = simulate("--out " + path("seq") + " --frames 3 --seed 1 --scene downtown");
+  EXPECT_THAT(r.out, HasSubstr("downtown"));
+}
+
+TEST_F(SimCli, RefusesANonEmptyFolderWithoutForce) {
+  fs::create_directories(path("seq"));
+  std::ofstream(path("seq/keep.txt")) << "mine";
+  CliResult r = simulate("--out " + path("seq") + " --frames 2 --seed 1 --no-preview");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("not empty"));
+  EXPECT_THAT(r.out, HasSubstr("--force"));
+  EXPECT_FALSE(fs::exists(path("seq/velodyne")));
+  r = simulate("--out " + path("seq") + " --frames 2 --seed 1 --no-preview --force");
+  EXPECT_EQ(r.status, 0) << r.out;
+  std::ifstream in(path("seq/keep.txt"));
+  std::string kept;
+  in >> kept;
+  EXPECT_EQ(kept, "mine");
+  // A longer earlier run leaves frames behind: --force never deletes them, but says so.
+  std::ofstream(path("seq/velodyne/000009.bin")) << "";
+  r = simulate("--out " + path("seq") + " --frames 2 --seed 1 --no-preview --force");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("warning"));
+  EXPECT_TRUE(fs::exists(path("seq/velodyne/000009.bin")));
+}
+
+TEST_F(SimCli, RefusesAFileAsOutput) {
+  std::ofstream(path("file")) << "x";
+  const CliResult r = simulate("--out " + path("file") + " --frames 2 --seed 1 --force");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("not a folder"));
+}
+
+}  // namespace
+}  // namespace sgtllc
