@@ -31,6 +31,7 @@ test: build
 
 bench: build
 	$(BUILD)/bench/sgtllc_bench
+	$(BUILD)/bench/sgtllc_bench_sim
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log

@@ -124,7 +124,7 @@ void BM_Verify15(benchmark::State& state) {
   for (auto _ : state) {
     passed = 0;
     for (const auto& nodes : candidates) {
-      const DescribedFrame cand = describeFrame(nodes, config.graph, config.descriptor);
+      const DescribedFrame cand = describeFrame(nodes, config.graph, config.descriptor, /*with_global=*/false);
       const MatchResult m = matchFrames(query, cand, config);
       passed += m.rejection == Rejection::kNone;
       benchmark::DoNotOptimize(m);

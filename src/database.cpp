@@ -7,6 +7,28 @@
 #include "kdtree_index.h"
 
 namespace sgtllc {
+namespace {
+
+/// Squared L2 distance with eight independent partial sums: the compiler may vectorise it (a single running sum
+/// is a strict float dependency chain it must not reorder), and the fixed summation order keeps results
+/// identical from run to run.
+float squaredDistance(const float* a, const float* b, int dim) {
+  constexpr int kLanes = 8;
+  float lane[kLanes] = {};
+  int d = 0;
+  for (; d + kLanes <= dim; d += kLanes) {
+    for (int l = 0; l < kLanes; ++l) {
+      const float diff = a[d + l] - b[d + l];
+      lane[l] += diff * diff;
+    }
+  }
+  float sum = 0.0f;
+  for (; d < dim; ++d) sum += (a[d] - b[d]) * (a[d] - b[d]);
+  for (float v : lane) sum += v;
+  return sum;
+}
+
+}  // namespace
 
 struct FrameDatabase::Impl {
   RetrievalMethod method;
@@ -54,13 +76,8 @@ std::vector<RetrievedFrame> FrameDatabase::query(const std::vector<float>& globa
   } else {
     hits.reserve(static_cast<size_t>(last) + 1);
     for (int f = 0; f <= last; ++f) {
-      const float* row = impl_->globals.data() + static_cast<size_t>(f) * impl_->dim;
-      float d2 = 0.0f;
-      for (int d = 0; d < impl_->dim; ++d) {
-        const float diff = row[d] - global[d];
-        d2 += diff * diff;
-      }
-      hits.emplace_back(f, d2);
+      hits.emplace_back(f, squaredDistance(impl_->globals.data() + static_cast<size_t>(f) * impl_->dim,
+                                           global.data(), impl_->dim));
     }
     const auto closer = [](const auto& a, const auto& b) {
       return a.second < b.second || (a.second == b.second && a.first < b.first);

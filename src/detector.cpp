@@ -57,7 +57,8 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
     Candidate& cand = result.candidates[c];
     cand.frame = retrieved[c].frame;
     cand.distance2 = retrieved[c].distance2;
-    const DescribedFrame candidate = describeFrame(database_.nodes(cand.frame), config_.graph, config_.descriptor);
+    const DescribedFrame candidate =
+        describeFrame(database_.nodes(cand.frame), config_.graph, config_.descriptor, /*with_global=*/false);
     cand.match = matchFrames(query, candidate, config_);
   });
   // Highest score_t wins; a tie goes to the later (higher-index) candidate, as the authors' `>=` (spec §7.4).

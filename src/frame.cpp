@@ -4,11 +4,12 @@
 
 namespace sgtllc {
 
-DescribedFrame describeFrame(std::vector<Node> nodes, const GraphConfig& graph, const DescriptorConfig& descriptor) {
+DescribedFrame describeFrame(std::vector<Node> nodes, const GraphConfig& graph, const DescriptorConfig& descriptor,
+                             bool with_global) {
   DescribedFrame f;
   f.graph = buildGraph(std::move(nodes), graph);
   f.local = computeLocalDescriptors(f.graph, descriptor);
-  f.global = computeGlobalDescriptor(f.graph, descriptor);
+  if (with_global) f.global = computeGlobalDescriptor(f.graph, descriptor);
   return f;
 }
 

@@ -1,5 +1,7 @@
 #include "sgtllc/verification.h"
 
+#include <algorithm>
+
 #include "sgtllc/ransac.h"
 
 namespace sgtllc {
@@ -62,7 +64,17 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   result.rejection = Rejection::kNone;
   result.inliers = ransac.inliers;
   const double n_in = static_cast<double>(ransac.inliers.size());
-  result.score_t = (vc.score_formula == ScoreFormula::kPaper ? n_in : n_in - 1.0) / la;
+  switch (vc.score_formula) {
+    case ScoreFormula::kPaper:
+      result.score_t = n_in / la;
+      break;
+    case ScoreFormula::kLegacy:
+      result.score_t = (n_in - 1.0) / la;
+      break;
+    case ScoreFormula::kOverlap:
+      result.score_t = n_in / std::max(query.numNodes(), match.numNodes());
+      break;
+  }
 
   std::vector<Eigen::Vector3d> src_in, dst_in;
   for (int k : ransac.inliers) {

@@ -351,7 +351,7 @@ TEST_F(MatchFrames, SelfMatchUnderRigidMotion) {
   const int la = static_cast<int>(result.associations.size());
   EXPECT_GE(la, 7);
   EXPECT_DOUBLE_EQ(result.score_c, static_cast<double>(la) / query.numNodes());
-  EXPECT_DOUBLE_EQ(result.score_t, static_cast<double>(result.inliers.size()) / la);
+  EXPECT_DOUBLE_EQ(result.score_t, static_cast<double>(result.inliers.size()) / query.numNodes());
   // Every inlier is a node matched to its own moved copy.
   for (int k : result.inliers) {
     EXPECT_EQ(result.associations[k].query, result.associations[k].match);
@@ -360,6 +360,23 @@ TEST_F(MatchFrames, SelfMatchUnderRigidMotion) {
   const auto back = sgtllc::matchFrames(match, query, cfg);
   ASSERT_EQ(back.rejection, sgtllc::Rejection::kNone);
   EXPECT_LT((back.T_match_query * T_ - Eigen::Matrix4d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST_F(MatchFrames, ScoreFormulas) {
+  // The default overlap score divides by the larger graph; drop query nodes so the two graphs differ in size.
+  std::vector<Node> fewer(nodes_.begin(), nodes_.end() - 3);
+  const DescribedFrame query = describe(fewer), match = describe(moved_);
+  ASSERT_LT(query.numNodes(), match.numNodes());
+  sgtllc::Config cfg;
+  const auto overlap = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(overlap.rejection, sgtllc::Rejection::kNone);
+  const double n_in = static_cast<double>(overlap.inliers.size());
+  EXPECT_DOUBLE_EQ(overlap.score_t, n_in / match.numNodes());
+  cfg.verification.score_formula = sgtllc::ScoreFormula::kPaper;
+  const auto paper = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(paper.inliers.size(), overlap.inliers.size());
+  EXPECT_DOUBLE_EQ(paper.score_t, n_in / static_cast<double>(paper.associations.size()));
+  EXPECT_GT(paper.score_t, overlap.score_t);
 }
 
 TEST_F(MatchFrames, LegacyScoreFormula) {

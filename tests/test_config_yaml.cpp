@@ -24,7 +24,8 @@ TEST(ConfigYaml, DefaultsRoundTrip) {
   EXPECT_EQ(io::configToYaml(io::parseConfig(text)), text);
   EXPECT_THAT(text, HasSubstr("sigma_d: 30.0"));
   EXPECT_THAT(text, HasSubstr("  building:\n    voxel: 0.4"));
-  EXPECT_THAT(text, HasSubstr("global_mode: G3"));
+  EXPECT_THAT(text, HasSubstr("global_mode: G2"));
+  EXPECT_THAT(text, HasSubstr("score_formula: overlap"));
 }
 
 TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
@@ -37,7 +38,7 @@ TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
   c.graph.sigma_d = 42.5;
   c.graph.allow_k_equals_i = true;
   c.descriptor.order = SubVectorOrder::kCode;
-  c.descriptor.global_mode = GlobalMode::kG2;
+  c.descriptor.global_mode = GlobalMode::kG1;
   c.retrieval.method = RetrievalMethod::kKdTree;
   c.retrieval.warmup_frames = 150;
   c.association.score = NodeScore::kCount;
@@ -59,7 +60,7 @@ TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
   EXPECT_EQ(back.graph.sigma_d, 42.5);
   EXPECT_TRUE(back.graph.allow_k_equals_i);
   EXPECT_EQ(back.descriptor.order, SubVectorOrder::kCode);
-  EXPECT_EQ(back.descriptor.global_mode, GlobalMode::kG2);
+  EXPECT_EQ(back.descriptor.global_mode, GlobalMode::kG1);
   EXPECT_EQ(back.retrieval.method, RetrievalMethod::kKdTree);
   EXPECT_EQ(back.retrieval.warmup_frames, 150);
   EXPECT_EQ(back.association.score, NodeScore::kCount);
@@ -133,6 +134,9 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(io::loadConfig(dir + "mulran.yaml").labels.preset, LabelPreset::kMulRan);
   EXPECT_EQ(io::loadConfig(dir + "mulran.yaml").verification.sigma_4, 0.1);
   EXPECT_EQ(io::loadConfig(dir + "mcd.yaml").labels.preset, LabelPreset::kMcd);
+  const Config paper = io::loadConfig(dir + "paper.yaml");
+  EXPECT_EQ(paper.descriptor.global_mode, GlobalMode::kG1);
+  EXPECT_EQ(paper.verification.score_formula, ScoreFormula::kPaper);
   const Config code = io::loadConfig(dir + "authors-code.yaml");
   EXPECT_EQ(code.descriptor.global_mode, GlobalMode::kG2);
   EXPECT_EQ(code.verification.score_formula, ScoreFormula::kLegacy);

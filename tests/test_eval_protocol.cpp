@@ -124,6 +124,39 @@ TEST_F(PlantedSequence, FramesWithoutPosesAreAnError) {
   }
 }
 
+// Loop counts by distance and by pose, on hand-built records: the distance protocol calls a loop 25 m away false,
+// the pose check tells whether it is still a right constraint.
+TEST(SequenceMetricsCounts, LoopsByDistanceAndByPose) {
+  SequenceRun run;
+  const auto loopFrame = [&](double distance, double rte, double rre, bool within_pose_distance) {
+    FrameRecord f;
+    f.frame = static_cast<long>(run.frames.size());
+    f.queried = true;
+    f.candidates = {CandidateRecord{0, 0.6, 0.8, distance, 1.0, Rejection::kNone}};
+    f.best = 0;
+    f.is_loop = true;
+    f.pose_error = PoseError{rte, rre};
+    f.pose_evaluated = within_pose_distance;
+    run.frames.push_back(f);
+  };
+  loopFrame(1.0, 0.1, 0.5, true);     // true loop, right pose
+  loopFrame(25.0, 0.3, 1.0, false);   // false by distance, right pose
+  loopFrame(30.0, 20.0, 3.0, false);  // false, wrong pose
+  loopFrame(10.0, 1.9, 4.9, false);   // 3–20 m, right pose (just inside both bounds)
+  loopFrame(12.0, 2.0, 0.1, false);   // 3–20 m, RTE on the bound: wrong
+  const SequenceMetrics m = computeSequenceMetrics(run, EvalOptions{});
+  EXPECT_EQ(m.n_queries, 5);
+  EXPECT_EQ(m.loops_detected, 5);
+  EXPECT_EQ(m.loops_true, 1);
+  EXPECT_EQ(m.loops_false, 2);
+  EXPECT_EQ(m.loops_pose_correct, 3);
+  EXPECT_EQ(m.loops_false_pose_correct, 1);
+  // The published pose table counts only loops within pose_max_distance.
+  EXPECT_EQ(m.poses.evaluated, 1);
+  EXPECT_EQ(m.poses.successes, 1);
+  EXPECT_DOUBLE_EQ(m.poses.rte_mean, 0.1);
+}
+
 TEST(PairListProtocol, RealKittiPairsWithScansGetTheRightAnswer) {
   // The SSC-style list of KITTI 00 holds 004501/000052 (loop) and 000850/000088 (not); only those two have scans.
   const std::string seq = test::dataPath("kitti/00");

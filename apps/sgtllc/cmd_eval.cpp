@@ -99,8 +99,9 @@ void runEval(const EvalCliOptions& o) {
               << summaryLine("retrieval recall@15", m.retrieval_recall) << "\n"
               << "top-1 per query: " << summaryLine("F1max", m.top1.f1_max) << ", " << summaryLine("EP", m.top1.ep)
               << "\nloops detected " << m.loops_detected << " (true " << m.loops_true << ", false " << m.loops_false
-              << "); pose success " << fixed(m.poses.success_rate, 4) << ", mean RTE " << fixed(m.poses.rte_mean, 3)
-              << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"
+              << "; with a correct pose at any distance " << m.loops_pose_correct << ", of the false "
+              << m.loops_false_pose_correct << "); pose success " << fixed(m.poses.success_rate, 4) << ", mean RTE "
+              << fixed(m.poses.rte_mean, 3) << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"
               << "ms per frame: median " << fixed(m.ms_per_frame_median, 2) << ", p99 " << fixed(m.ms_per_frame_p99, 2)
               << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n";
   }

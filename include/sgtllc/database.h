@@ -19,7 +19,7 @@ struct RetrievedFrame {
 
 /// What the database keeps of a frame: its nodes and its global descriptor. Local descriptors are a pure function
 /// of the nodes (describeFrame) and are rebuilt for the ≤ K candidates of a query, which costs microseconds and
-/// keeps the store near 1 KB per frame instead of ~20 KB (spec §10).
+/// keeps the store near 2 KB per frame (G2) instead of ~20 KB (spec §10).
 struct StoredFrame {
   std::vector<Node> nodes;
   std::vector<float> global;

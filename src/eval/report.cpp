@@ -73,13 +73,16 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
 
   std::ostringstream frames;
   frames << "frame,nodes,queried,has_revisit,loop,match,score,match_distance_m,extraction_ms,description_ms,"
-            "retrieval_ms,verification_ms,db_bytes\n";
+            "retrieval_ms,verification_ms,db_bytes,loop_rte_m,loop_rre_deg\n";
   for (const FrameRecord& f : run.frames) {
     const CandidateRecord* best = f.best >= 0 ? &f.candidates[static_cast<size_t>(f.best)] : nullptr;
     frames << f.name << "," << f.num_nodes << "," << f.queried << "," << f.has_revisit << "," << f.is_loop << ","
            << (best ? std::to_string(best->frame) : "") << "," << (best ? best->score_t : 0.0) << ","
            << (best ? best->distance : 0.0) << "," << f.timing.extraction_ms << "," << f.timing.description_ms << ","
-           << f.timing.retrieval_ms << "," << f.timing.verification_ms << "," << f.db_bytes << "\n";
+           << f.timing.retrieval_ms << "," << f.timing.verification_ms << "," << f.db_bytes << ",";
+    if (f.is_loop) frames << f.pose_error.translation_m << "," << f.pose_error.rotation_deg;
+    else frames << ",";
+    frames << "\n";
   }
   writeText(out / "frames.csv", frames.str());
 
@@ -110,7 +113,11 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
      << m.n_revisit_queries << " |\n| scored pairs: positive / negative | " << main.n_positive << " / "
      << main.n_negative << " |\n| detected loops: true / false / 3–20 m | " << m.loops_true << " / "
      << m.loops_false << " / " << (m.loops_detected - m.loops_true - m.loops_false)
-     << " |\n| pose success rate (RTE < " << fixed(options.success_translation, 0) << " m, RRE < "
+     << " |\n| detected loops with a correct pose (RTE < " << fixed(options.success_translation, 0) << " m, RRE < "
+     << fixed(options.success_rotation, 0) << "°), at any distance: all / false | " << m.loops_pose_correct << " of "
+     << m.loops_detected << " / " << m.loops_false_pose_correct << " of " << m.loops_false
+     << " |\n| pose success rate of loops within " << fixed(options.pose_max_distance, 0) << " m (RTE < "
+     << fixed(options.success_translation, 0) << " m, RRE < "
      << fixed(options.success_rotation, 0) << "°) | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes
      << " of " << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3)
      << " m / " << fixed(m.poses.rre_mean, 3) << "° |\n| ms per frame, median / p99 | "

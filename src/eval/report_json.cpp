@@ -36,7 +36,12 @@ Json sequenceMetricsJson(const SequenceMetrics& m) {
           {"ms_per_frame_median", m.ms_per_frame_median},
           {"ms_per_frame_p99", m.ms_per_frame_p99},
           {"db_bytes_per_frame", m.db_bytes_per_frame},
-          {"loops", {{"detected", m.loops_detected}, {"true", m.loops_true}, {"false", m.loops_false}}},
+          {"loops",
+           {{"detected", m.loops_detected},
+            {"true", m.loops_true},
+            {"false", m.loops_false},
+            {"pose_correct", m.loops_pose_correct},
+            {"false_pose_correct", m.loops_false_pose_correct}}},
           {"poses", poseJson(m.poses)},
           {"top1", curveJson(m.top1)},
           {"distance_test", distance_test}};

@@ -46,10 +46,8 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
       ++loops;
       rec.T_match_query = loop->match.T_match_query;
       const long m = numbers[static_cast<size_t>(loop->frame)];
-      if (truth.distance(rec.frame, m) <= options.pose_max_distance) {
-        rec.pose_evaluated = true;
-        rec.pose_error = poseError(rec.T_match_query, truth.relative(m, rec.frame));
-      }
+      rec.pose_error = poseError(rec.T_match_query, truth.relative(m, rec.frame));
+      rec.pose_evaluated = truth.distance(rec.frame, m) <= options.pose_max_distance;
     }
     run.frames.push_back(std::move(rec));
     if (options.progress) options.progress(i + 1, source.size(), loops);
@@ -117,6 +115,10 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
       const double d = f.candidates[static_cast<size_t>(f.best)].distance;
       out.loops_true += d < positive;
       out.loops_false += d > options.negative_distance;
+      const bool pose_ok = f.pose_error.translation_m < options.success_translation &&
+                           f.pose_error.rotation_deg < options.success_rotation;
+      out.loops_pose_correct += pose_ok;
+      out.loops_false_pose_correct += pose_ok && d > options.negative_distance;
     }
   }
   out.retrieval_recall = out.n_revisit_queries > 0 ? out.retrieval_recall / out.n_revisit_queries : 0.0;

@@ -249,9 +249,12 @@ const std::vector<Field>& fields() {
     f.push_back(number("verification.ransac_confidence",
                        "stop RANSAC once an all-inlier sample is drawn with this probability; 1 = all iterations",
                        [](Config& c) -> double& { return c.verification.ransac_confidence; }));
-    f.push_back(choice<ScoreFormula>("verification.score_formula", "score_t: n_in/|LA| or (n_in - 1)/|LA|",
+    f.push_back(choice<ScoreFormula>("verification.score_formula",
+                                     "score_t: n_in/|LA|, (n_in - 1)/|LA| or n_in/max(M, N)",
                                      [](Config& c) -> ScoreFormula& { return c.verification.score_formula; },
-                                     {{"paper", ScoreFormula::kPaper}, {"legacy", ScoreFormula::kLegacy}}));
+                                     {{"paper", ScoreFormula::kPaper},
+                                      {"legacy", ScoreFormula::kLegacy},
+                                      {"overlap", ScoreFormula::kOverlap}}));
     f.push_back(number("verification.sigma_4", "σ_4: loop iff best score_t > σ_4 (0.1 for MulRan/MCD)",
                        [](Config& c) -> double& { return c.verification.sigma_4; }));
     f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
