@@ -268,6 +268,22 @@ TEST(Fec, CappedEqualsSpecTransliteration) {
   }
 }
 
+TEST(Fec, DenseNeighbourhoodsEqualSpecTransliteration) {
+  // Thousands of points within r of each seed, as a trunk next to the sensor clustered without downsampling:
+  // fastEuclideanClustering then searches a finer grid ring by ring (tight blobs settle within the rings, wide ones
+  // fall back to the full scan); either way the clusters must equal the reference's.
+  const std::pair<float, int> blobs[] = {{0.04f, 2400}, {0.15f, 2400}, {0.5f, 2000}};
+  for (const auto& [sigma, n] : blobs) {
+    Cloud pts = gaussianBlobs(31, 2, n / 2, sigma, 1.5f);
+    const Cloud strand = line(60, 0.3f, 7);  // a sparse chain through and beyond the blobs
+    pts.insert(pts.end(), strand.begin(), strand.end());
+    for (int cap : {3, 5, 12, 100, 250}) {
+      SCOPED_TRACE("sigma " + std::to_string(sigma) + " cap " + std::to_string(cap));
+      EXPECT_EQ(fastEuclideanClustering(pts, 1.0, cap, 1), fecReference(pts, 1.0, cap, 1));
+    }
+  }
+}
+
 TEST(Fec, CapChangesTheResultOnDenseBlobs) {
   // Guards the comparison above against a cap that is silently ignored.
   const Cloud pts = gaussianBlobs(21, 3, 400, 0.3f, 6.0f);
