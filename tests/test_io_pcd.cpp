@@ -389,3 +389,48 @@ TEST_F(PcdIo, WriteNodesPcdErrors) {
 }
 
 }  // namespace
+
+// ------------------------------------------------------------------------------------------------------------------
+// Files written by PCL itself (data/pcd: every 100th point of KITTI scan 000052, re-encoded by PCL 1.13's writer).
+
+namespace {
+
+/// Every 100th point and label word of the bundled scan 000052, read straight from the KITTI files.
+std::pair<std::vector<Eigen::Vector3f>, std::vector<uint32_t>> everyHundredthOf52() {
+  const std::string dir = std::string(SGTLLC_DATA_DIR) + "/kitti/00/";
+  std::ifstream bin(dir + "velodyne/000052.bin", std::ios::binary);
+  std::ifstream lab(dir + "labels/000052.label", std::ios::binary);
+  std::vector<Eigen::Vector3f> points;
+  std::vector<uint32_t> labels;
+  float xyzi[4];
+  uint32_t label = 0;
+  for (size_t i = 0; bin.read(reinterpret_cast<char*>(xyzi), sizeof xyzi) &&
+                     lab.read(reinterpret_cast<char*>(&label), sizeof label);
+       ++i) {
+    if (i % 100 != 0) continue;
+    points.emplace_back(xyzi[0], xyzi[1], xyzi[2]);
+    labels.push_back(label);
+  }
+  return {points, labels};
+}
+
+TEST(PcdWrittenByPcl, EveryEncodingReadsTheScanPoints) {
+  const auto [points, labels] = everyHundredthOf52();
+  ASSERT_EQ(points.size(), 1208u);
+  for (const char* kind : {"binary", "binary_compressed", "ascii"}) {
+    SCOPED_TRACE(kind);
+    const std::string path = std::string(SGTLLC_DATA_DIR) + "/pcd/000052_every100th_" + kind + ".pcd";
+    const sgtllc::LabeledCloud cloud = sgtllc::io::readPcd(path);
+    ASSERT_EQ(cloud.points.size(), points.size());
+    EXPECT_EQ(cloud.labels, labels);
+    // PCL writes binary floats bit for bit, ASCII floats with 7 significant digits (≤ 5e-6 m at these ranges).
+    const float tolerance = std::string(kind) == "ascii" ? 5e-5f : 0.0f;
+    float worst = 0.0f;
+    for (size_t i = 0; i < points.size(); ++i) {
+      worst = std::max(worst, (cloud.points[i] - points[i]).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LE(worst, tolerance);
+  }
+}
+
+}  // namespace
