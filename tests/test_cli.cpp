@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/io/nodes.h"
 #include "test_support.h"
 
 namespace sgtllc {
@@ -249,6 +251,29 @@ TEST_F(Cli, RunFindsThePlantedLoopAndWritesCsv) {
   ASSERT_EQ(two.status, 0) << two.out;
   std::ifstream a(path("loops.csv")), b(path("loops2.csv"));
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+}
+
+TEST_F(Cli, RunReadsNodeFilesLikeScans) {
+  // Users with their own object extraction give one node file per frame; the loops must equal the scans' when the
+  // node files hold the nodes those scans give.
+  makeSequence(dir_ / "seq");
+  const Config config;
+  const eval::FrameSource scans = eval::FrameSource::semanticKitti((dir_ / "seq").string(), config);
+  fs::create_directories(dir_ / "nodes");
+  for (size_t i = 0; i < scans.size(); ++i) {
+    io::writeNodesTxt((dir_ / "nodes" / (scans.name(i) + ".txt")).string(), scans.load(i).nodes);
+  }
+  ASSERT_EQ(run("run " + (dir_ / "seq").string() + " --out " + path("scans.csv")).status, 0);
+  const CliRun r = run("run --nodes " + (dir_ / "nodes").string() + " --out " + path("nodes.csv"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("loop 000053 -> 000000"));
+  std::ifstream a(path("scans.csv")), b(path("nodes.csv"));
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+  // Exactly one of SEQ_DIR and --nodes.
+  EXPECT_EQ(run("run").status, 2);
+  const CliRun both = run("run " + (dir_ / "seq").string() + " --nodes " + (dir_ / "nodes").string());
+  EXPECT_EQ(both.status, 2);
+  EXPECT_THAT(both.out, HasSubstr("either SEQ_DIR"));
 }
 
 TEST_F(Cli, RunChecksTheOutputPathBeforeWorking) {

@@ -1,4 +1,4 @@
-// `sgtllc run SEQ_DIR`: streams a SemanticKITTI-layout sequence through the online detector.
+// `sgtllc run SEQ_DIR` / `sgtllc run --nodes NODE_DIR`: streams a sequence through the online detector.
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -13,6 +13,7 @@ namespace {
 
 struct RunOptions {
   std::string sequence;
+  std::string nodes;
   std::string out;
   std::string config;
   int threads = 0;
@@ -42,7 +43,8 @@ std::string csv(const std::vector<Loop>& loops) {
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   if (!o.out.empty()) checkWritable(o.out, o.force);
-  const eval::FrameSource source = eval::FrameSource::semanticKitti(o.sequence, config);
+  const eval::FrameSource source = o.nodes.empty() ? eval::FrameSource::semanticKitti(o.sequence, config)
+                                                   : eval::FrameSource::nodeFiles(o.nodes, config);
   LoopDetector detector(config);
 
   std::vector<Loop> loops;
@@ -85,7 +87,7 @@ void runSequence(const RunOptions& o) {
                       {"score_c", l.score_c},
                       {"T_match_query", matrixJson(l.T)}});
     }
-    const Json out = {{"sequence", o.sequence},
+    const Json out = {{"sequence", o.nodes.empty() ? o.sequence : o.nodes},
                                 {"frames", n},
                                 {"loops", loops.size()},
                                 {"ms_per_frame_median", eval::percentile(frame_ms, 0.5)},
@@ -108,14 +110,21 @@ void runSequence(const RunOptions& o) {
 void addRunCommand(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Stream a SemanticKITTI-layout sequence through the online detector");
-  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin and labels/NNNNNN.label")->required();
+  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin and labels/NNNNNN.label");
+  cmd->add_option("--nodes", o->nodes,
+                  "instead of SEQ_DIR: a folder of node files NAME.txt (x y z label rows), frames in name order");
   cmd->add_option("--out", o->out, "write the detected loops as CSV (query,match,score,score_c, 3x4 pose)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and the loops as one JSON object");
   cmd->add_flag("--force", o->force, "overwrite an existing --out file");
-  cmd->callback([o] { runSequence(*o); });
+  cmd->callback([o] {
+    if (o->sequence.empty() == o->nodes.empty()) {
+      throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
+    }
+    runSequence(*o);
+  });
 }
 
 }  // namespace sgtllc::cli
