@@ -36,6 +36,19 @@ inline Eigen::Matrix4d rigid(double yaw_deg, double pitch_deg, double roll_deg, 
   return T;
 }
 
+/// The rigid transform with rotation @p R and translation @p t.
+inline Eigen::Matrix4d makeT(const Eigen::Matrix3d& R, const Eigen::Vector3d& t) {
+  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
+  T.topLeftCorner<3, 3>() = R;
+  T.topRightCorner<3, 1>() = t;
+  return T;
+}
+
+/// T · p.
+inline Eigen::Vector3d apply(const Eigen::Matrix4d& T, const Eigen::Vector3d& p) {
+  return T.topLeftCorner<3, 3>() * p + T.topRightCorner<3, 1>();
+}
+
 /// Applies T to every point (in double, rounded back to float).
 inline LabeledCloud transformed(const LabeledCloud& cloud, const Eigen::Matrix4d& T) {
   LabeledCloud out = cloud;

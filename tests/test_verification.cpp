@@ -1,0 +1,147 @@
+// Frame verification (spec §7.1–§7.5): gates, RANSAC, loop score and pose on real KITTI nodes.
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "sgtllc/frame.h"
+#include "sgtllc/node_extraction.h"
+#include "sgtllc/verification.h"
+#include "test_support.h"
+
+namespace {
+
+using sgtllc::DescribedFrame;
+using sgtllc::Node;
+using sgtllc::test::apply;
+using sgtllc::test::makeT;
+
+double rotationErrorDeg(const Eigen::Matrix4d& A, const Eigen::Matrix4d& B) {
+  return sgtllc::test::poseError(A, B).rotation_deg;
+}
+
+std::vector<Node> scanNodes(const std::string& name) {
+  return sgtllc::NodeExtractor({}, {}).extract(sgtllc::test::kittiScan(name)).nodes;
+}
+
+DescribedFrame describe(const std::vector<Node>& nodes, const sgtllc::Config& cfg = {}) {
+  return sgtllc::describeFrame(nodes, cfg.graph, cfg.descriptor);
+}
+
+// --- (d) matchFrames on real nodes ---------------------------------------------------------------------------------
+
+class MatchFrames : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    nodes_ = scanNodes("000052");
+    const Eigen::Matrix3d R = (Eigen::AngleAxisd(2.1, Eigen::Vector3d::UnitZ()) *
+                               Eigen::AngleAxisd(0.04, Eigen::Vector3d::UnitX())).toRotationMatrix();
+    T_ = makeT(R, Eigen::Vector3d(7.5, -3.0, 0.4));
+    moved_ = nodes_;
+    for (Node& n : moved_) n.centre = apply(T_, n.centre);
+  }
+  std::vector<Node> nodes_, moved_;
+  Eigen::Matrix4d T_;
+};
+
+TEST_F(MatchFrames, SelfMatchUnderRigidMotion) {
+  const sgtllc::Config cfg;
+  const DescribedFrame query = describe(nodes_), match = describe(moved_);
+  const auto result = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(result.rejection, sgtllc::Rejection::kNone);
+  EXPECT_TRUE(sgtllc::isLoop(result, cfg.verification));
+  // p_match = T_match_query · p_query: the transform applied to the nodes.
+  EXPECT_LT((result.T_match_query.topRightCorner<3, 1>() - T_.topRightCorner<3, 1>()).norm(), 0.02);
+  EXPECT_LT(rotationErrorDeg(result.T_match_query, T_), 0.1);
+  EXPECT_LT((result.T_match_query - T_).cwiseAbs().maxCoeff(), 1e-6);
+  const int la = static_cast<int>(result.associations.size());
+  EXPECT_GE(la, 7);
+  EXPECT_DOUBLE_EQ(result.score_c, static_cast<double>(la) / query.numNodes());
+  EXPECT_DOUBLE_EQ(result.score_t, static_cast<double>(result.inliers.size()) / query.numNodes());
+  // Every inlier is a node matched to its own moved copy.
+  for (int k : result.inliers) {
+    EXPECT_EQ(result.associations[k].query, result.associations[k].match);
+  }
+  // Reversed roles give the inverse transform.
+  const auto back = sgtllc::matchFrames(match, query, cfg);
+  ASSERT_EQ(back.rejection, sgtllc::Rejection::kNone);
+  EXPECT_LT((back.T_match_query * T_ - Eigen::Matrix4d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST_F(MatchFrames, ScoreFormulas) {
+  // The default overlap score divides by the larger graph; drop query nodes so the two graphs differ in size.
+  std::vector<Node> fewer(nodes_.begin(), nodes_.end() - 3);
+  const DescribedFrame query = describe(fewer), match = describe(moved_);
+  ASSERT_LT(query.numNodes(), match.numNodes());
+  sgtllc::Config cfg;
+  const auto overlap = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(overlap.rejection, sgtllc::Rejection::kNone);
+  const double n_in = static_cast<double>(overlap.inliers.size());
+  EXPECT_DOUBLE_EQ(overlap.score_t, n_in / match.numNodes());
+  cfg.verification.score_formula = sgtllc::ScoreFormula::kPaper;
+  const auto paper = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(paper.inliers.size(), overlap.inliers.size());
+  EXPECT_DOUBLE_EQ(paper.score_t, n_in / static_cast<double>(paper.associations.size()));
+  EXPECT_GT(paper.score_t, overlap.score_t);
+}
+
+TEST_F(MatchFrames, LegacyScoreFormula) {
+  sgtllc::Config cfg;
+  cfg.verification.score_formula = sgtllc::ScoreFormula::kLegacy;
+  const auto result = sgtllc::matchFrames(describe(nodes_), describe(moved_), cfg);
+  ASSERT_EQ(result.rejection, sgtllc::Rejection::kNone);
+  const double la = static_cast<double>(result.associations.size());
+  EXPECT_DOUBLE_EQ(result.score_t, (static_cast<double>(result.inliers.size()) - 1.0) / la);
+}
+
+TEST_F(MatchFrames, Gates) {
+  const DescribedFrame query = describe(nodes_), match = describe(moved_);
+  sgtllc::Config cfg;
+  const auto base = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(base.rejection, sgtllc::Rejection::kNone);
+  const int la = static_cast<int>(base.associations.size());
+  const auto expectRejected = [](const sgtllc::MatchResult& r, sgtllc::Rejection why) {
+    EXPECT_EQ(r.rejection, why);
+    EXPECT_EQ(r.score_t, 0.0);
+    EXPECT_TRUE(r.inliers.empty());
+    EXPECT_EQ(r.T_match_query, Eigen::Matrix4d::Identity());
+  };
+  cfg.verification.sigma_3 = base.score_c;  // score_c < σ_3 rejects, equality passes
+  EXPECT_EQ(sgtllc::matchFrames(query, match, cfg).rejection, sgtllc::Rejection::kNone);
+  cfg.verification.sigma_3 = std::nextafter(base.score_c, 2.0);
+  expectRejected(sgtllc::matchFrames(query, match, cfg), sgtllc::Rejection::kFewAssociations);
+  cfg = sgtllc::Config{};
+  cfg.verification.min_associations = la;
+  EXPECT_EQ(sgtllc::matchFrames(query, match, cfg).rejection, sgtllc::Rejection::kNone);
+  cfg.verification.min_associations = la + 1;
+  const auto few = sgtllc::matchFrames(query, match, cfg);
+  expectRejected(few, sgtllc::Rejection::kFewAssociations);
+  EXPECT_EQ(static_cast<int>(few.associations.size()), la);  // LA and score_c are still reported
+  EXPECT_DOUBLE_EQ(few.score_c, base.score_c);
+  cfg = sgtllc::Config{};
+  cfg.verification.min_inliers = la + 1;
+  expectRejected(sgtllc::matchFrames(query, match, cfg), sgtllc::Rejection::kRansacFailed);
+  // Six query nodes can give at most six associations: below |LA| ≥ 7.
+  const std::vector<Node> six(nodes_.begin(), nodes_.begin() + 6);
+  expectRejected(sgtllc::matchFrames(describe(six), match, sgtllc::Config{}), sgtllc::Rejection::kFewAssociations);
+}
+
+TEST(MatchFramesReal, LoopAndNonLoopPairs) {
+  // demo_pairs.txt: T_52_4501 from the KITTI ground truth (p_52 = T · p_4501), 2.96 m apart.
+  Eigen::Matrix4d T_gt = Eigen::Matrix4d::Identity();
+  T_gt.topRows<3>() << 0.999935, -0.005261, -0.010094, 2.946203, 0.005313, 0.999973, 0.005146, 0.134634, 0.010066,
+      -0.005199, 0.999936, 0.278113;
+  const sgtllc::Config cfg;
+  const auto loop = sgtllc::matchFrames(describe(scanNodes("004501")), describe(scanNodes("000052")), cfg);
+  ASSERT_EQ(loop.rejection, sgtllc::Rejection::kNone);
+  EXPECT_TRUE(sgtllc::isLoop(loop, cfg.verification));
+  // The KITTI ground truth itself is decimetres off here (mostly in z); spec §11 gets 2 cm against ICP-refined poses.
+  EXPECT_LT((loop.T_match_query.topRightCorner<3, 1>() - T_gt.topRightCorner<3, 1>()).norm(), 0.5);
+  EXPECT_LT(rotationErrorDeg(loop.T_match_query, T_gt), 1.0);
+  const auto far = sgtllc::matchFrames(describe(scanNodes("000850")), describe(scanNodes("000088")), cfg);
+  EXPECT_FALSE(sgtllc::isLoop(far, cfg.verification));
+  EXPECT_EQ(far.rejection, sgtllc::Rejection::kFewAssociations);
+}
+
+}  // namespace
