@@ -34,9 +34,17 @@ Eigen::Vector2d RoadEdge::tangentAt(double at) const {
   return (line[k + 1] - line[k]).normalized();
 }
 
+double RoadEdge::headingAt(double at, bool forward) const {
+  const Eigen::Vector2d t = tangentAt(at) * (forward ? 1.0 : -1.0);
+  return std::atan2(t.y(), t.x());
+}
+
 Eigen::Vector2d RoadEdge::sidePoint(double at, double offset) const {
-  const Eigen::Vector2d t = tangentAt(at);
-  return pointAt(at) + offset * Eigen::Vector2d(t.y(), -t.x());
+  double f;
+  const size_t k = locate(*this, at, f);  // once for the point and the tangent
+  const Eigen::Vector2d point = (1.0 - f) * line[k] + f * line[k + 1];
+  const Eigen::Vector2d t = (line[k + 1] - line[k]).normalized();
+  return point + offset * Eigen::Vector2d(t.y(), -t.x());
 }
 
 void RoadNetwork::addEdge(int a, int b, bool avenue, const RoadProfile& profile, double bulge) {

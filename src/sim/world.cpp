@@ -30,11 +30,11 @@ double valueNoise(uint64_t seed, double x, double y, double scale) {
 
 }  // namespace
 
-WorldBuilder::WorldBuilder(World& w) : world(w), preset(w.config.preset), cell_(kOccupancyCell) {
+WorldBuilder::WorldBuilder(World& w) : world(w), preset(w.config.preset) {
   lo_ = w.zones.lo();
   const Eigen::Vector2d hi = w.zones.hi();
-  nx_ = static_cast<long>(std::ceil((hi.x() - lo_.x()) / cell_));
-  ny_ = static_cast<long>(std::ceil((hi.y() - lo_.y()) / cell_));
+  nx_ = static_cast<long>(std::ceil((hi.x() - lo_.x()) / kOccupancyCell));
+  ny_ = static_cast<long>(std::ceil((hi.y() - lo_.y()) / kOccupancyCell));
   occupied_.assign(static_cast<size_t>(nx_ * ny_), 0);
 }
 
@@ -63,13 +63,13 @@ bool WorldBuilder::visitCells(const Footprint& f, F&& visit) const {
   const Eigen::Vector2d ax(std::cos(f.yaw), std::sin(f.yaw)), ay(-ax.y(), ax.x());
   const double ex = 0.5 * (std::abs(ax.x()) * f.length + std::abs(ay.x()) * f.width);
   const double ey = 0.5 * (std::abs(ax.y()) * f.length + std::abs(ay.y()) * f.width);
-  const long x0 = static_cast<long>(std::floor((f.centre.x() - ex - lo_.x()) / cell_));
-  const long x1 = static_cast<long>(std::floor((f.centre.x() + ex - lo_.x()) / cell_));
-  const long y0 = static_cast<long>(std::floor((f.centre.y() - ey - lo_.y()) / cell_));
-  const long y1 = static_cast<long>(std::floor((f.centre.y() + ey - lo_.y()) / cell_));
+  const long x0 = static_cast<long>(std::floor((f.centre.x() - ex - lo_.x()) / kOccupancyCell));
+  const long x1 = static_cast<long>(std::floor((f.centre.x() + ex - lo_.x()) / kOccupancyCell));
+  const long y0 = static_cast<long>(std::floor((f.centre.y() - ey - lo_.y()) / kOccupancyCell));
+  const long y1 = static_cast<long>(std::floor((f.centre.y() + ey - lo_.y()) / kOccupancyCell));
   for (long iy = y0; iy <= y1; ++iy) {
     for (long ix = x0; ix <= x1; ++ix) {
-      const Eigen::Vector2d c = lo_ + cell_ * Eigen::Vector2d(ix + 0.5, iy + 0.5);
+      const Eigen::Vector2d c = lo_ + kOccupancyCell * Eigen::Vector2d(ix + 0.5, iy + 0.5);
       const Eigen::Vector2d r = c - f.centre;
       if (std::abs(r.dot(ax)) > 0.5 * f.length || std::abs(r.dot(ay)) > 0.5 * f.width) continue;
       if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) return false;
@@ -86,12 +86,10 @@ bool WorldBuilder::fits(const Footprint& f, ZoneMask allowed) const {
 }
 
 void WorldBuilder::occupy(const Footprint& f) {
-  std::vector<size_t> cells;
   visitCells(f, [&](size_t i, const Eigen::Vector2d&) {
-    cells.push_back(i);
+    occupied_[i] = 1;
     return true;
   });
-  for (size_t i : cells) occupied_[i] = 1;
 }
 
 float WorldBuilder::changeTime(Rng& rng, double p) const {
@@ -173,10 +171,11 @@ std::vector<Primitive> World::agentPrimitives(double time, const Eigen::Vector2d
     const Eigen::Vector2d xy = e.sidePoint(at, a.forward ? a.offset : -a.offset);
     const double dist = (xy - centre).norm();
     if (dist > radius || dist < clearance) continue;
-    const Eigen::Vector2d t = e.tangentAt(at) * (a.forward ? 1.0 : -1.0);
-    const double yaw = std::atan2(t.y(), t.x());
+    const double yaw = e.headingAt(at, a.forward);
     const double z = ground.height(xy.x(), xy.y());
-    const uint16_t label = a.speed > 0 ? (a.car ? semantic::kMovingCar : semantic::kMovingPerson) : semantic::kPerson;
+    const bool moving = a.speed > 0;
+    const uint16_t label = a.car ? (moving ? semantic::kMovingCar : semantic::kCar)
+                                 : (moving ? semantic::kMovingPerson : semantic::kPerson);
     if (a.car) {
       detail::vehiclePrimitives(out, xy, z, yaw, detail::VehicleType::kCar, a.length, a.width, a.height, label,
                                 a.object, 0.2f);

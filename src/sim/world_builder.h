@@ -22,7 +22,7 @@ struct Footprint {
 };
 
 /// Vehicle body shapes.
-enum class VehicleType { kCar, kVan, kTruck };
+enum class VehicleType { kCar, kVan };
 
 class WorldBuilder {
  public:
@@ -47,6 +47,15 @@ class WorldBuilder {
     return fits(Footprint{c, 2 * radius, 2 * radius, 0.0}, allowed);
   }
   void occupyCircle(const Eigen::Vector2d& c, double radius) { occupy(Footprint{c, 2 * radius, 2 * radius, 0.0}); }
+  /// fits() and, if so, occupy(): true if the footprint was free and is now taken.
+  bool claim(const Footprint& f, ZoneMask allowed) {
+    if (!fits(f, allowed)) return false;
+    occupy(f);
+    return true;
+  }
+  bool claimCircle(const Eigen::Vector2d& c, double radius, ZoneMask allowed) {
+    return claim(Footprint{c, 2 * radius, 2 * radius, 0.0}, allowed);
+  }
   /// With probability @p p, a random time inside the sequence (15–85 % of it) at which something changes;
   /// otherwise kInf (it never changes).
   float changeTime(Rng& rng, double p) const;
@@ -56,7 +65,6 @@ class WorldBuilder {
   bool visitCells(const Footprint& f, F&& visit) const;
 
   uint32_t things_ = 0;  ///< vehicles and people so far
-  double cell_;
   Eigen::Vector2d lo_;
   long nx_ = 0, ny_ = 0;
   std::vector<uint8_t> occupied_;

@@ -16,10 +16,7 @@ struct Lot {
 
   double mid() const { return 0.5 * (s0 + s1); }
   double width() const { return s1 - s0; }
-  double yaw() const {
-    const Eigen::Vector2d t = edge->tangentAt(mid());
-    return std::atan2(t.y(), t.x());
-  }
+  double yaw() const { return edge->headingAt(mid()); }
   /// A point @p along metres from the lot's start and @p depth metres behind the property line.
   Eigen::Vector2d at(double along, double depth) const { return edge->sidePoint(s0 + along, side * (base + depth)); }
 };
@@ -31,8 +28,7 @@ bool addBuilding(WorldBuilder& b, Rng& rng, const Lot& lot, double setback) {
   const double yaw = lot.yaw();
   const Eigen::Vector2d inward = (lot.at(0.5 * lot.width(), 1.0) - lot.at(0.5 * lot.width(), 0.0)).normalized();
   const Footprint main{lot.at(0.5 * lot.width(), setback + 0.5 * depth), lot.width(), depth, yaw};
-  if (!b.fits(main, kPrivateLand)) return false;
-  b.occupy(main);
+  if (!b.claim(main, kPrivateLand)) return false;
   const uint32_t object = b.addObject(ObjectKind::kBuilding);
   const float refl = static_cast<float>(rng.uniform(0.25, 0.55));
   auto box = [&](const Footprint& f, double z0, double top) {
@@ -56,8 +52,7 @@ bool addBuilding(WorldBuilder& b, Rng& rng, const Lot& lot, double setback) {
     const double wing_w = lot.width() * rng.uniform(0.3, 0.6), wing_d = rng.uniform(4.0, 10.0);
     const double along = rng.chance(0.5) ? 0.5 * wing_w : lot.width() - 0.5 * wing_w;
     const Footprint wing{lot.at(along, setback + depth + 0.5 * wing_d), wing_w, wing_d, yaw};
-    if (b.fits(wing, kPrivateLand)) {
-      b.occupy(wing);
+    if (b.claim(wing, kPrivateLand)) {
       box(wing, z0, ground + height * rng.uniform(0.5, 0.9));
     }
   }
@@ -66,8 +61,7 @@ bool addBuilding(WorldBuilder& b, Rng& rng, const Lot& lot, double setback) {
     for (int k = 0; k < bays; ++k) {
       const double w = rng.uniform(2.0, 4.0), d = rng.uniform(0.6, 1.2);
       const Footprint bay{lot.at(rng.uniform(0.5 * w, lot.width() - 0.5 * w), setback - 0.5 * d), w, d, yaw};
-      if (!b.fits(bay, kPrivateLand)) continue;
-      b.occupy(bay);
+      if (!b.claim(bay, kPrivateLand)) continue;
       box(bay, z0, ground + rng.uniform(2.6, std::max(2.8, 0.8 * height)));
     }
   }
@@ -87,8 +81,7 @@ void addLotFront(WorldBuilder& b, Rng& rng, const Lot& lot) {
     if (to - from < 1.5) continue;
     const Eigen::Vector2d a = lot.at(from, depth), c = lot.at(to, depth);
     const Footprint f{0.5 * (a + c), (c - a).norm(), hedge ? 1.0 : 0.3, lot.yaw()};
-    if (!b.fits(f, kPrivateLand)) continue;
-    b.occupy(f);
+    if (!b.claim(f, kPrivateLand)) continue;
     if (hedge) {
       addHedge(b, rng, a, c, change);
     } else {
@@ -103,8 +96,7 @@ void addYard(WorldBuilder& b, Rng& rng, const Lot& lot, double depth_free) {
   if (depth_free > 3.0 && rng.chance(p.yard_tree_probability)) {
     const Eigen::Vector2d xy = lot.at(rng.uniform(2.0, std::max(2.5, lot.width() - 2.0)),
                                       rng.uniform(2.0, std::max(2.2, depth_free - 1.5)));
-    if (b.fitsCircle(xy, 1.0, kPrivateLand)) {
-      b.occupyCircle(xy, 1.0);
+    if (b.claimCircle(xy, 1.0, kPrivateLand)) {
       const float change = b.changeTime(rng, p.vegetation_change);
       addTree(b, rng, xy, rng.uniform(0.6, 1.1), change);
     }
@@ -115,8 +107,7 @@ void addYard(WorldBuilder& b, Rng& rng, const Lot& lot, double depth_free) {
       const double radius = rng.uniform(0.6, 1.5);
       const Eigen::Vector2d xy = lot.at(rng.uniform(1.0, std::max(1.2, lot.width() - 1.0)),
                                         rng.uniform(1.2, std::max(1.3, depth_free - radius)));
-      if (!b.fitsCircle(xy, radius, kPrivateLand)) continue;
-      b.occupyCircle(xy, radius);
+      if (!b.claimCircle(xy, radius, kPrivateLand)) continue;
       addBush(b, rng, xy, radius, b.changeTime(rng, p.vegetation_change));
     }
   }
@@ -145,8 +136,7 @@ void placeBuildings(WorldBuilder& b) {
           // Greenery between houses: a bush or a small tree near the front of the gap.
           const Lot between{&e, side, lot.s1, lot.s1 + gap, lot.base};
           const Eigen::Vector2d xy = between.at(0.5 * gap, rng.uniform(1.0, 4.0));
-          if (b.fitsCircle(xy, 0.5 * gap, kPrivateLand)) {
-            b.occupyCircle(xy, 0.5 * gap);
+          if (b.claimCircle(xy, 0.5 * gap, kPrivateLand)) {
             const float change = b.changeTime(rng, p.vegetation_change);
             if (rng.chance(0.4)) {
               addTree(b, rng, xy, rng.uniform(0.6, 1.0), change);

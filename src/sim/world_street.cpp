@@ -9,12 +9,6 @@ namespace {
 
 constexpr ZoneMask kKerbside = zoneBit(Zone::kSidewalk) | zoneBit(Zone::kVerge) | kPrivateLand;
 
-/// Heading (rad) of an edge at arc length s, in the direction of travel given by @p forward.
-double heading(const RoadEdge& e, double s, bool forward) {
-  const Eigen::Vector2d t = e.tangentAt(s) * (forward ? 1.0 : -1.0);
-  return std::atan2(t.y(), t.x());
-}
-
 Primitive& pole(WorldBuilder& b, const Eigen::Vector2d& xy, double radius, double height, uint32_t object) {
   Primitive& p = b.add(makeCylinder(xy.cast<float>(), static_cast<float>(b.groundZ(xy) - 0.3),
                                     static_cast<float>(radius), static_cast<float>(height + 0.3), semantic::kPole,
@@ -61,7 +55,7 @@ void trafficSign(WorldBuilder& b, Rng& rng, const RoadEdge& e, double s, bool fo
   const bool second = rng.chance(0.3);
   pole(b, xy, rng.uniform(0.03, 0.05), bottom + size + 0.05, object);
   // Plates face oncoming traffic, 5 cm in front of the pole.
-  const double yaw = heading(e, s, forward) + rng.uniform(-0.15, 0.15);
+  const double yaw = e.headingAt(s, forward) + rng.uniform(-0.15, 0.15);
   const Eigen::Vector2d front = xy - 0.06 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
   const float refl = static_cast<float>(rng.uniform(0.75, 1.0));  // retro-reflective
   plate(b, front, bottom + 0.5 * size, size, size, yaw, semantic::kTrafficSign, object, refl);
@@ -77,7 +71,7 @@ void trafficLight(WorldBuilder& b, Rng& rng, const RoadEdge& e, double s, bool f
   const uint32_t object = b.addObject(ObjectKind::kSign);
   const double h = rng.uniform(3.2, 4.5);
   pole(b, xy, 0.1, h, object);
-  const double yaw = heading(e, s, forward);
+  const double yaw = e.headingAt(s, forward);
   plate(b, xy, h - 0.7, 0.35, 1.0, yaw, semantic::kTrafficSign, object, 0.35f);
 }
 
@@ -87,7 +81,7 @@ void smallObject(WorldBuilder& b, Rng& rng, const RoadEdge& e, double s, int sid
   if (!b.fitsCircle(xy, 0.5, kKerbside)) return;
   b.occupyCircle(xy, 0.5);
   const uint32_t object = b.addObject(ObjectKind::kOther);
-  const double yaw = heading(e, s, true);
+  const double yaw = e.headingAt(s);
   b.add(makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy)), static_cast<float>(rng.uniform(0.5, 1.6)),
                 static_cast<float>(rng.uniform(0.4, 0.7)), static_cast<float>(rng.uniform(0.8, 1.2)),
                 static_cast<float>(yaw), semantic::kOtherObject, object))

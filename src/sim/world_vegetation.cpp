@@ -170,11 +170,8 @@ void placeStreetVegetation(WorldBuilder& b) {
         for (double s = s0; s + 10.0 < s1; s += rng.uniform(25.0, 60.0)) {
           const double len = rng.uniform(15.0, 50.0);
           const Eigen::Vector2d a = e.sidePoint(s, off), c = e.sidePoint(std::min(s1, s + len), off);
-          if (!b.fits(Footprint{0.5 * (a + c), (c - a).norm(), 1.0, std::atan2((c - a).y(), (c - a).x())},
-                      kPrivateLand | zoneBit(Zone::kVerge))) {
-            continue;
-          }
-          b.occupy(Footprint{0.5 * (a + c), (c - a).norm(), 1.0, std::atan2((c - a).y(), (c - a).x())});
+          const Footprint strip{0.5 * (a + c), (c - a).norm(), 1.0, std::atan2((c - a).y(), (c - a).x())};
+          if (!b.claim(strip, kPrivateLand | zoneBit(Zone::kVerge))) continue;
           if (hedge) {
             addHedge(b, rng, a, c, kInf);
           } else {

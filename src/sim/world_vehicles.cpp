@@ -57,12 +57,9 @@ void vehiclePrimitives(std::vector<Primitive>& out, const Eigen::Vector2d& xy, d
     const float waist = 0.58f * height;
     push(xy, z + 0.25f, length, width, waist - 0.25f);
     push(xy - 0.06 * length * fwd, z + waist, 0.55f * length, 0.9f * width, height - waist);
-  } else if (type == VehicleType::kVan) {
+  } else {  // van
     push(xy - 0.08 * length * fwd, z + 0.3f, 0.84f * length, width, height - 0.3f);
     push(xy + 0.42 * length * fwd, z + 0.3f, 0.16f * length, width, 0.45f * height);
-  } else {
-    push(xy - 0.15 * length * fwd, z + 0.5f, 0.7f * length, width, height - 0.5f);
-    push(xy + 0.35 * length * fwd, z + 0.4f, 0.3f * length, width, 0.75f * height);
   }
 }
 
@@ -71,8 +68,9 @@ void placeParkedVehicles(WorldBuilder& b) {
   const ScenePreset& p = b.preset;
   const RoadNetwork& net = b.world.roads;
   constexpr ZoneMask kParkingZones = zoneBit(Zone::kParking);
+  if (p.parking_occupancy <= 0) return;
   for (const RoadEdge& e : net.edges()) {
-    if (e.profile.parking_width <= 0 || p.parking_occupancy <= 0) continue;
+    if (e.profile.parking_width <= 0) continue;
     const double s0 = net.clearance(e.a) + 1.0, s1 = e.length() - net.clearance(e.b) - 1.0;
     const double off = e.profile.kerb() - 0.5 * e.profile.parking_width;
     for (int side : {1, -1}) {
@@ -85,8 +83,7 @@ void placeParkedVehicles(WorldBuilder& b) {
           const VehicleDraw v = drawVehicle(rng);
           const double at = s + 3.0 + rng.uniform(-0.3, 0.3);
           const Eigen::Vector2d xy = e.sidePoint(at, side * (off + rng.uniform(-0.15, 0.15)));
-          const Eigen::Vector2d t = e.tangentAt(at) * side;
-          const double yaw = std::atan2(t.y(), t.x()) + rng.uniform(-0.04, 0.04);
+          const double yaw = e.headingAt(at, side > 0) + rng.uniform(-0.04, 0.04);
           if (!b.fits(Footprint{xy, v.length - 0.5, v.width - 0.4, yaw}, kParkingZones)) continue;
           const uint32_t object = b.addObject(ObjectKind::kVehicle);
           const size_t first = b.prims.size();

@@ -29,6 +29,8 @@ struct RoadEdge {
   /// Point and unit tangent (direction a → b) at arc length @p at, clamped to the edge.
   Eigen::Vector2d pointAt(double at) const;
   Eigen::Vector2d tangentAt(double at) const;
+  /// Heading (rad) at arc length @p at, along the edge (@p forward) or against it.
+  double headingAt(double at, bool forward = true) const;
   /// The point @p offset metres to the right of the centre line (facing a → b); negative = left.
   Eigen::Vector2d sidePoint(double at, double offset) const;
 };
