@@ -50,15 +50,17 @@ class HashGrid {
     for (uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) f(members_[k]);
   }
 
-  /// Calls f(index) for every point in the cells whose coordinates differ from @p p's cell by exactly @p ring in
-  /// their largest component (ring 0: p's own cell).
+  /// The cell of a point.
+  internal::Cell cellOf(const Eigen::Vector3f& p) const { return internal::cellOf(p, inv_cell_); }
+
+  /// Calls f(index) for every point in the cells whose coordinates differ from cell @p c by exactly @p ring in
+  /// their largest component (ring 0: c itself).
   template <typename F>
-  void forEachInRing(const Eigen::Vector3f& p, int ring, F&& f) const {
-    const internal::Cell c = internal::cellOf(p, inv_cell_);
+  void forEachInRing(const internal::Cell& c, int ring, F&& f) const {
     for (int dz = -ring; dz <= ring; ++dz) {
       for (int dy = -ring; dy <= ring; ++dy) {
-        const bool face = std::abs(dz) == ring || std::abs(dy) == ring;
-        for (int dx = -ring; dx <= ring; dx += (face || ring == 0) ? 1 : 2 * ring) {
+        const bool face = std::abs(dz) == ring || std::abs(dy) == ring;  // always true at ring 0
+        for (int dx = -ring; dx <= ring; dx += face ? 1 : 2 * ring) {
           const uint32_t cell = index_.find(internal::offset(c, dx, dy, dz));
           if (cell != internal::KeyIndex::kMissing) forEachIn(cell, f);
         }
@@ -123,8 +125,9 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
     if (candidates > dense_count) {
       if (!fine) fine.emplace(points, fine_cell);
       const float slack = 1e-3f + 1e-6f * p.cwiseAbs().maxCoeff();
+      const internal::Cell fine_cell_of_p = fine->cellOf(p);
       for (int ring = 0; ring <= kMaxFineRing && !settled; ++ring) {
-        fine->forEachInRing(p, ring, consider);
+        fine->forEachInRing(fine_cell_of_p, ring, consider);
         if (ring == 0 || near.size() < cap) continue;
         // A point outside rings 0..ring is more than ring fine cells from p along some axis, less the float
         // rounding of cell coordinates (slack). If at least max_neighbors points found lie closer than that, the

@@ -13,8 +13,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sgtllc/eval/frame_source.h"
-#include "sgtllc/io/nodes.h"
 #include "test_support.h"
 
 namespace sgtllc {
@@ -258,11 +256,7 @@ TEST_F(Cli, RunReadsNodeFilesLikeScans) {
   // node files hold the nodes those scans give.
   makeSequence(dir_ / "seq");
   const Config config;
-  const eval::FrameSource scans = eval::FrameSource::semanticKitti((dir_ / "seq").string(), config);
-  fs::create_directories(dir_ / "nodes");
-  for (size_t i = 0; i < scans.size(); ++i) {
-    io::writeNodesTxt((dir_ / "nodes" / (scans.name(i) + ".txt")).string(), scans.load(i).nodes);
-  }
+  test::writeNodeFiles(eval::FrameSource::semanticKitti((dir_ / "seq").string(), config), (dir_ / "nodes").string());
   ASSERT_EQ(run("run " + (dir_ / "seq").string() + " --out " + path("scans.csv")).status, 0);
   const CliRun r = run("run --nodes " + (dir_ / "nodes").string() + " --out " + path("nodes.csv"));
   ASSERT_EQ(r.status, 0) << r.out;

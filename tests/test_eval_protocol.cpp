@@ -9,7 +9,6 @@
 
 #include "sgtllc/eval/pair_eval.h"
 #include "sgtllc/eval/report.h"
-#include "sgtllc/io/nodes.h"
 #include "test_support.h"
 
 namespace sgtllc::eval {
@@ -95,10 +94,7 @@ TEST_F(PlantedSequence, NodeFilesGiveTheSameMetricsAsScans) {
   const Config config;
   const FrameSource scans = FrameSource::semanticKitti(dir, config);
   const std::string nodes_dir = dir + "_nodes";
-  fs::create_directories(nodes_dir);
-  for (size_t i = 0; i < scans.size(); ++i) {
-    io::writeNodesTxt(nodes_dir + "/" + scans.name(i) + ".txt", scans.load(i).nodes);
-  }
+  test::writeNodeFiles(scans, nodes_dir);
   const GroundTruth truth = GroundTruth::fromKitti(dir + "/poses.txt", dir + "/calib.txt");
   const EvalOptions options;
   const SequenceMetrics a = computeSequenceMetrics(runSequenceEvaluation(scans, truth, config, options), options);

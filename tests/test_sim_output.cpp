@@ -163,6 +163,32 @@ TEST_F(SimOutput, SameBytesAtAnyThreadCount) {
   EXPECT_EQ(files, 2u * 600u + 6u);
 }
 
+TEST(SimWriter, AccumulatedFramesEqualFrameByFrame) {
+  // The writer casts each raw scan once and merges it into every frame that accumulates it, across batch
+  // boundaries (1 thread: batches of 4 frames, 6 scans per frame); every file must equal Simulator::frame(i).
+  SimConfig c = smallConfig();
+  c.frames = 15;
+  c.accumulate = 6;
+  const Simulator sim(c);
+  const fs::path dir = fs::temp_directory_path() / ("sgtllc_sim_accumulate_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  WriteOptions o;
+  o.dir = dir.string();
+  o.threads = 1;
+  o.previews = false;
+  writeSequence(sim, o);
+  const io::SequenceDir seq(o.dir);
+  ASSERT_EQ(seq.size(), 15u);
+  for (int i = 0; i < 15; ++i) {
+    const SimFrame f = sim.frame(i);
+    const LabeledCloud got = seq.load(static_cast<size_t>(i));
+    ASSERT_EQ(got.points, f.points) << "frame " << i;
+    ASSERT_EQ(got.labels, f.labels) << "frame " << i;
+  }
+  EXPECT_GT(sim.frame(14).points.size(), 5 * sim.frame(0).points.size());  // 6 scans against 1
+  fs::remove_all(dir);
+}
+
 TEST_F(SimOutput, NeverOverwritesUnlessForced) {
   const fs::path target = root_ / "user";
   fs::create_directories(target);

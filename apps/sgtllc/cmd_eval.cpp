@@ -45,8 +45,7 @@ std::string summaryLine(const char* name, double value) { return std::string(nam
 void runEval(const EvalCliOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   checkReportFolder(o.report, o.force);
-  const eval::FrameSource source = o.nodes.empty() ? eval::FrameSource::semanticKitti(o.sequence, config)
-                                                   : eval::FrameSource::nodeFiles(o.nodes, config);
+  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   eval::EvalOptions options;
   options.threads = config.threads;
   Progress progress("frames", source.size());

@@ -43,8 +43,7 @@ std::string csv(const std::vector<Loop>& loops) {
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   if (!o.out.empty()) checkWritable(o.out, o.force);
-  const eval::FrameSource source = o.nodes.empty() ? eval::FrameSource::semanticKitti(o.sequence, config)
-                                                   : eval::FrameSource::nodeFiles(o.nodes, config);
+  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   LoopDetector detector(config);
 
   std::vector<Loop> loops;
@@ -109,7 +108,7 @@ void runSequence(const RunOptions& o) {
 
 void addRunCommand(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
-  CLI::App* cmd = app.add_subcommand("run", "Stream a SemanticKITTI-layout sequence through the online detector");
+  CLI::App* cmd = app.add_subcommand("run", "Stream a sequence (scans and labels, or node files) through the online detector");
   cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin and labels/NNNNNN.label");
   cmd->add_option("--nodes", o->nodes,
                   "instead of SEQ_DIR: a folder of node files NAME.txt (x y z label rows), frames in name order");

@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/sim/preview.h"
 #include "sgtllc/sim/sequence_writer.h"
 
@@ -32,11 +33,10 @@ struct SimulateOptions {
   bool no_preview = false;
 };
 
+/// eval::percentile in the values' own type, so counts print as integers.
 template <typename T>
-T percentile(std::vector<T> v, double q) {
-  if (v.empty()) return T{};
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5))];
+T percentile(const std::vector<T>& v, double q) {
+  return static_cast<T>(eval::percentile(std::vector<double>(v.begin(), v.end()), q));
 }
 
 std::vector<int> totals(const std::vector<std::array<int, kNumClasses>>& nodes) {
@@ -97,14 +97,13 @@ void simulate(const SimulateOptions& o) {
   config.accumulate = o.accumulate;
   config.label_noise = o.label_noise;
   config.revisits = o.revisits;
-  // Check the folder before minutes of work; writeSequence checks again when it starts writing.
-  sim::prepareOutputDir(o.out, o.force);
+  sim::checkOutputDir(o.out, o.force);  // before building the world; writeSequence checks again
   const auto start = std::chrono::steady_clock::now();
   const sim::Simulator simulator(config);
   sim::WriteOptions w;
   w.dir = o.out;
   w.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-  w.force = true;  // the folder was checked above and may now hold our own empty subfolders
+  w.force = o.force;
   w.previews = !o.no_preview;
   Progress progress("frames", static_cast<size_t>(config.frames));
   const sim::SequenceStats stats =
@@ -116,8 +115,9 @@ void simulate(const SimulateOptions& o) {
   size_t stale = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(o.out) / "velodyne")) {
     const std::string stem = entry.path().stem().string();
-    const bool ours = stem.size() == 6 && std::all_of(stem.begin(), stem.end(), ::isdigit) &&
-                      std::stoi(stem) < stats.frames;
+    const bool digits =
+        std::all_of(stem.begin(), stem.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+    const bool ours = stem.size() == 6 && digits && std::stoi(stem) < stats.frames;
     if (entry.path().extension() == ".bin" && !ours) ++stale;
   }
   if (stale > 0) {

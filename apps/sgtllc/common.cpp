@@ -28,6 +28,10 @@ Config loadConfigOption(const std::string& path, int threads) {
   return config;
 }
 
+eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config) {
+  return nodes.empty() ? eval::FrameSource::semanticKitti(sequence, config) : eval::FrameSource::nodeFiles(nodes, config);
+}
+
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {

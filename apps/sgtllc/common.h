@@ -10,6 +10,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/detector.h"
+#include "sgtllc/eval/frame_source.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::cli {
@@ -26,6 +27,9 @@ std::string& commandLine();
 
 /// Configuration from --config (or the defaults), with --threads applied if given (> 0).
 Config loadConfigOption(const std::string& path, int threads);
+
+/// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels.
+eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config);
 
 /// One input frame reduced to graph nodes.
 struct FrameNodes {

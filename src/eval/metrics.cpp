@@ -65,7 +65,7 @@ PoseSummary summarisePoses(const std::vector<PoseError>& errors, double max_tran
   PoseSummary s;
   s.evaluated = static_cast<int>(errors.size());
   for (const PoseError& e : errors) {
-    if (e.translation_m < max_translation_m && e.rotation_deg < max_rotation_deg) {
+    if (e.succeeds(max_translation_m, max_rotation_deg)) {
       ++s.successes;
       s.rte_mean += e.translation_m;
       s.rre_mean += e.rotation_deg;

@@ -115,8 +115,7 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
       const double d = f.candidates[static_cast<size_t>(f.best)].distance;
       out.loops_true += d < positive;
       out.loops_false += d > options.negative_distance;
-      const bool pose_ok = f.pose_error.translation_m < options.success_translation &&
-                           f.pose_error.rotation_deg < options.success_rotation;
+      const bool pose_ok = f.pose_error.succeeds(options.success_translation, options.success_rotation);
       out.loops_pose_correct += pose_ok;
       out.loops_false_pose_correct += pose_ok && d > options.negative_distance;
     }

@@ -26,7 +26,7 @@ std::string readWholeFile(const std::string& path) {
   return bytes;
 }
 
-void writeFile(const std::string& path, const std::string& content) {
+void writeFile(const std::string& path, std::string_view content) {
   FilePtr file(std::fopen(path.c_str(), "wb"), &std::fclose);
   if (!file) throw Error("cannot write " + path + ": " + std::strerror(errno));
   const bool written = std::fwrite(content.data(), 1, content.size(), file.get()) == content.size();

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <charconv>
+#include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -16,8 +18,23 @@ namespace sgtllc::io::detail {
 
 using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 
-// The binary formats (KITTI .bin/.label, PCD binary) are little-endian; big-endian hosts swap after reading.
+// The binary formats (KITTI .bin/.label, PCD binary) are little-endian; big-endian hosts swap after reading and
+// before writing.
 inline constexpr bool kHostLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
+
+/// Converts 4-byte words between host and little-endian order (nothing to do on little-endian hosts).
+template <typename T>
+void swapWordsIfBigEndian(std::vector<T>& words) {
+  static_assert(sizeof(T) == 4);
+  if constexpr (!kHostLittleEndian) {
+    for (T& w : words) {
+      uint32_t u;
+      std::memcpy(&u, &w, 4);
+      u = __builtin_bswap32(u);
+      std::memcpy(&w, &u, 4);
+    }
+  }
+}
 
 /// Opens a file for binary reading. Throws `cannot open PATH: REASON` (strerror, or "is a directory").
 FilePtr openForReading(const std::string& path);
@@ -26,7 +43,7 @@ FilePtr openForReading(const std::string& path);
 std::string readWholeFile(const std::string& path);
 
 /// Creates or replaces @p path with @p content. Throws `cannot write PATH: REASON`.
-void writeFile(const std::string& path, const std::string& content);
+void writeFile(const std::string& path, std::string_view content);
 
 /// Throws `cannot write PATH: node I has label L, not a stable class index 0..6` for the first node whose label is
 /// not a stable class index. Writers call it before creating the file.

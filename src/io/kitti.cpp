@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::FilePtr;
-using detail::kHostLittleEndian;
+using detail::swapWordsIfBigEndian;
 using detail::nextLine;
 using detail::splitBlanks;
 
@@ -26,19 +26,6 @@ uint64_t fileSize(std::FILE* file, const std::string& path) {
   const long size = (std::fseek(file, 0, SEEK_END) == 0) ? std::ftell(file) : -1L;
   if (size < 0 || std::fseek(file, 0, SEEK_SET) != 0) throw Error("cannot read " + path + ": " + std::strerror(errno));
   return static_cast<uint64_t>(size);
-}
-
-template <typename T>
-void swapWordsIfBigEndian(std::vector<T>& words) {
-  static_assert(sizeof(T) == 4);
-  if constexpr (!kHostLittleEndian) {
-    for (T& w : words) {
-      uint32_t u;
-      std::memcpy(&u, &w, 4);
-      u = __builtin_bswap32(u);
-      std::memcpy(&w, &u, 4);
-    }
-  }
 }
 
 /// Reads a whole file of fixed-size records of 4-byte words with one fread (the scans are ~2 MB; speed matters when

@@ -3,6 +3,8 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string_view>
+#include <utility>
 
 #include "file_util.h"
 #include "sgtllc/types.h"
@@ -10,25 +12,18 @@
 namespace sgtllc::io {
 namespace {
 
-/// Appends 4-byte words in little-endian order.
+/// Writes 4-byte words in little-endian order.
 template <typename T>
-void appendWords(std::string& out, const T* words, size_t count) {
-  static_assert(sizeof(T) == 4);
-  const size_t at = out.size();
-  out.resize(at + 4 * count);
-  std::memcpy(out.data() + at, words, 4 * count);
-  if constexpr (!detail::kHostLittleEndian) {
-    for (size_t k = at; k < out.size(); k += 4) {
-      std::swap(out[k], out[k + 3]);
-      std::swap(out[k + 1], out[k + 2]);
-    }
-  }
+void writeWords(const std::string& path, std::vector<T> words) {
+  detail::swapWordsIfBigEndian(words);
+  detail::writeFile(path, std::string_view(reinterpret_cast<const char*>(words.data()), 4 * words.size()));
 }
 
-void appendRow12(std::string& out, const Eigen::Matrix<double, 3, 4>& M, const char* format) {
+/// A 3×4 matrix as 12 row-major numbers in KITTI calib.txt's notation.
+void appendRow12(std::string& out, const Eigen::Matrix<double, 3, 4>& M) {
   char buf[64];
   for (int k = 0; k < 12; ++k) {
-    std::snprintf(buf, sizeof(buf), format, M(k / 4, k % 4));
+    std::snprintf(buf, sizeof(buf), "%.12e", M(k / 4, k % 4));
     if (k > 0) out += ' ';
     out += buf;
   }
@@ -64,16 +59,10 @@ void writeKittiBin(const std::string& path, const std::vector<Eigen::Vector3f>& 
     words[4 * i + 2] = points[i].z();
     words[4 * i + 3] = intensity[i];
   }
-  std::string bytes;
-  appendWords(bytes, words.data(), words.size());
-  detail::writeFile(path, bytes);
+  writeWords(path, std::move(words));
 }
 
-void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels) {
-  std::string bytes;
-  appendWords(bytes, labels.data(), labels.size());
-  detail::writeFile(path, bytes);
-}
+void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels) { writeWords(path, labels); }
 
 void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>& poses) {
   std::string text;
@@ -92,10 +81,10 @@ void writeKittiCalib(const std::string& path, const std::array<Eigen::Matrix<dou
   std::string text;
   for (int k = 0; k < 4; ++k) {
     text += "P" + std::to_string(k) + ": ";
-    appendRow12(text, P[k], "%.12e");
+    appendRow12(text, P[k]);
   }
   text += "Tr: ";
-  appendRow12(text, Tr.topRows<3>(), "%.12e");
+  appendRow12(text, Tr.topRows<3>());
   detail::writeFile(path, text);
 }
 

@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <map>
 #include <numeric>
+#include <utility>
 
 #include <Eigen/LU>
 
@@ -30,7 +32,7 @@ std::string frameName(int i) {
 /// Per-frame results a worker hands back (filled in its own slot; merged in frame order).
 struct FrameSlot {
   uint32_t points = 0;
-  std::map<uint16_t, uint64_t> classes, true_classes;
+  std::map<uint16_t, uint64_t> classes;
   bool sampled = false;
   std::array<int, kNumClasses> nodes{}, true_nodes{};
   std::exception_ptr error;
@@ -79,16 +81,20 @@ void revisitStats(const Simulator& sim, const std::vector<Eigen::Matrix4d>& pose
 
 }  // namespace
 
-void prepareOutputDir(const std::string& dir, bool force) {
+void checkOutputDir(const std::string& dir, bool force) {
   std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw Error("cannot write to " + dir + ": it is a file, not a folder");
-    if (!force && fs::directory_iterator(dir, ec) != fs::directory_iterator()) {
-      throw Error(dir + " is not empty; choose an empty or new folder, or pass --force to overwrite the simulator's "
-                        "files in it (nothing else is touched)");
-    }
-    if (ec) throw Error("cannot read folder " + dir + ": " + ec.message());
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw Error("cannot write to " + dir + ": it is a file, not a folder");
+  if (!force && fs::directory_iterator(dir, ec) != fs::directory_iterator()) {
+    throw Error(dir + " is not empty; choose an empty or new folder, or pass --force to overwrite the simulator's "
+                      "files in it (nothing else is touched)");
   }
+  if (ec) throw Error("cannot read folder " + dir + ": " + ec.message());
+}
+
+void prepareOutputDir(const std::string& dir, bool force) {
+  checkOutputDir(dir, force);
+  std::error_code ec;
   for (const fs::path& p : {fs::path(dir), fs::path(dir) / "velodyne", fs::path(dir) / "labels"}) {
     fs::create_directories(p, ec);
     if (ec || !fs::is_directory(p)) throw Error("cannot create folder " + p.string() + ": " + ec.message());
@@ -134,19 +140,43 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   const int threads = std::max(1, options.threads);
   const int batch = 4 * threads;
   std::vector<FrameSlot> slots;
+  // Raw scans by index. An accumulating sensor merges each scan into several consecutive frames, so every scan is
+  // cast once and kept until the last frame that needs it is written.
+  std::map<int, SimScan> scans;
   for (int first = 0; first < n; first += batch) {
     const int count = std::min(batch, n - first);
+    const int lo = sim.firstScan(first);
+    scans.erase(scans.begin(), scans.lower_bound(lo));
+    std::vector<int> missing;
+    for (int j = lo; j < first + count; ++j) {
+      if (scans.count(j) == 0) missing.push_back(j);
+    }
+    std::vector<SimScan> cast(missing.size());
+    std::vector<std::exception_ptr> cast_errors(missing.size());
+    parallelFor(static_cast<int>(missing.size()), threads, [&](int k) {
+      try {
+        cast[static_cast<size_t>(k)] = sim.scan(missing[static_cast<size_t>(k)]);
+      } catch (...) {
+        cast_errors[static_cast<size_t>(k)] = std::current_exception();
+      }
+    });
+    for (size_t k = 0; k < missing.size(); ++k) {
+      if (cast_errors[k]) std::rethrow_exception(cast_errors[k]);
+      scans.emplace(missing[k], std::move(cast[k]));
+    }
+
     slots.assign(static_cast<size_t>(count), FrameSlot{});
     parallelFor(count, threads, [&](int k) {
       FrameSlot& slot = slots[static_cast<size_t>(k)];
       const int i = first + k;
       try {
-        const SimFrame f = sim.frame(i);
+        std::vector<const SimScan*> merged;
+        for (int j = sim.firstScan(i); j <= i; ++j) merged.push_back(&scans.at(j));
+        const SimFrame f = sim.merge(i, merged);
         io::writeKittiBin(dir + "/velodyne/" + frameName(i) + ".bin", f.points, f.intensity);
         io::writeLabelFile(dir + "/labels/" + frameName(i) + ".label", f.labels);
         slot.points = static_cast<uint32_t>(f.points.size());
         for (uint32_t w : f.labels) ++slot.classes[static_cast<uint16_t>(w & 0xFFFF)];
-        for (uint32_t w : f.true_labels) ++slot.true_classes[static_cast<uint16_t>(w & 0xFFFF)];
         if (options.node_stats_every > 0 && i % options.node_stats_every == 0) {
           slot.sampled = true;
           slot.nodes = nodesPerClass(extractor, f, false);
@@ -160,7 +190,6 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
       if (slot.error) std::rethrow_exception(slot.error);
       stats.points.push_back(slot.points);
       for (const auto& [id, c] : slot.classes) stats.class_points[id] += c;
-      for (const auto& [id, c] : slot.true_classes) stats.true_class_points[id] += c;
       if (slot.sampled) {
         stats.nodes.push_back(slot.nodes);
         stats.true_nodes.push_back(slot.true_nodes);

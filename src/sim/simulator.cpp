@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <Eigen/LU>
 
@@ -75,27 +76,46 @@ Simulator::Simulator(const SimConfig& config) : config_(validated(config)), sens
   throw Error("could not plan a route long enough for " + std::to_string(config.frames) + " frames");
 }
 
-SimFrame Simulator::frame(int i) const {
+int Simulator::firstScan(int i) const { return std::max(0, i - config_.scansPerFrame() + 1); }
+
+SimScan Simulator::scan(int j) const {
+  if (j < 0 || j >= numFrames()) throw Error("scan " + std::to_string(j) + " is out of range");
+  const FramePose& pose = poses_[j];
+  RawScan raw = castScan(world_, sensor_, pose.T_world_lidar, pose.time, j, config_.seed);
+  SimScan out;
+  out.labels = predictLabels(raw, config_.label_noise, config_.seed, j);
+  out.true_labels = trueLabels(raw);
+  out.points = std::move(raw.points);
+  out.intensity = std::move(raw.intensity);
+  return out;
+}
+
+SimFrame Simulator::merge(int i, const std::vector<const SimScan*>& scans) const {
   if (i < 0 || i >= numFrames()) throw Error("frame " + std::to_string(i) + " is out of range");
+  const int first = firstScan(i);
+  if (static_cast<int>(scans.size()) != i - first + 1) throw Error("frame " + std::to_string(i) + ": wrong scans");
   SimFrame out;
   const Eigen::Matrix4d world_to_i = poses_[i].T_world_lidar.inverse();
-  const int first = std::max(0, i - config_.scansPerFrame() + 1);
   for (int j = first; j <= i; ++j) {
-    const FramePose& pose = poses_[j];
-    const RawScan raw = castScan(world_, sensor_, pose.T_world_lidar, pose.time, j, config_.seed);
-    const std::vector<uint32_t> labels = predictLabels(raw, config_.label_noise, config_.seed, j);
-    const std::vector<uint32_t> truth = trueLabels(raw);
-    const Eigen::Matrix4d T = world_to_i * pose.T_world_lidar;  // scan j into frame i
+    const SimScan& s = *scans[static_cast<size_t>(j - first)];
+    const Eigen::Matrix4d T = world_to_i * poses_[j].T_world_lidar;  // scan j into frame i
     const Eigen::Matrix3f R = T.topLeftCorner<3, 3>().cast<float>();
     const Eigen::Vector3f t = T.topRightCorner<3, 1>().cast<float>();
-    for (size_t k = 0; k < raw.points.size(); ++k) {
-      out.points.push_back(j == i ? raw.points[k] : Eigen::Vector3f(R * raw.points[k] + t));
-    }
-    out.intensity.insert(out.intensity.end(), raw.intensity.begin(), raw.intensity.end());
-    out.labels.insert(out.labels.end(), labels.begin(), labels.end());
-    out.true_labels.insert(out.true_labels.end(), truth.begin(), truth.end());
+    for (const Eigen::Vector3f& p : s.points) out.points.push_back(j == i ? p : Eigen::Vector3f(R * p + t));
+    out.intensity.insert(out.intensity.end(), s.intensity.begin(), s.intensity.end());
+    out.labels.insert(out.labels.end(), s.labels.begin(), s.labels.end());
+    out.true_labels.insert(out.true_labels.end(), s.true_labels.begin(), s.true_labels.end());
   }
   return out;
+}
+
+SimFrame Simulator::frame(int i) const {
+  if (i < 0 || i >= numFrames()) throw Error("frame " + std::to_string(i) + " is out of range");
+  std::vector<SimScan> scans;
+  std::vector<const SimScan*> ptrs;
+  for (int j = firstScan(i); j <= i; ++j) scans.push_back(scan(j));
+  for (const SimScan& s : scans) ptrs.push_back(&s);
+  return merge(i, ptrs);
 }
 
 }  // namespace sgtllc::sim

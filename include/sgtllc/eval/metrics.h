@@ -43,6 +43,11 @@ double extendedPrecision(const PrCurve& curve);
 struct PoseError {
   double translation_m = 0.0;  ///< RTE = ‖t_gt − t_est‖
   double rotation_deg = 0.0;   ///< RRE = arccos((tr(R_estᵀ R_gt) − 1) / 2), clipped to [−1, 1]
+
+  /// A success as published tables count it: RTE below @p max_translation_m and RRE below @p max_rotation_deg.
+  bool succeeds(double max_translation_m, double max_rotation_deg) const {
+    return translation_m < max_translation_m && rotation_deg < max_rotation_deg;
+  }
 };
 
 PoseError poseError(const Eigen::Matrix4d& estimate, const Eigen::Matrix4d& ground_truth);

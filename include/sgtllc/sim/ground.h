@@ -65,9 +65,12 @@ class ZoneMap {
   ZoneMap(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double cell, Zone fill, Zone outside);
 
   Zone at(double x, double y) const {
-    const long ix = static_cast<long>((x - lo_.x()) * inv_cell_), iy = static_cast<long>((y - lo_.y()) * inv_cell_);
-    if (x < lo_.x() || y < lo_.y() || ix >= nx_ || iy >= ny_) return outside_;
-    return static_cast<Zone>(cells_[static_cast<size_t>(iy * nx_ + ix)]);
+    const double fx = (x - lo_.x()) * inv_cell_, fy = (y - lo_.y()) * inv_cell_;
+    // Range test before converting: a far or non-finite coordinate must not reach the (undefined) cast to long.
+    if (!(x >= lo_.x() && y >= lo_.y() && fx < static_cast<double>(nx_) && fy < static_cast<double>(ny_))) {
+      return outside_;
+    }
+    return static_cast<Zone>(cells_[static_cast<size_t>(static_cast<long>(fy) * nx_ + static_cast<long>(fx))]);
   }
   /// Sets every cell whose centre lies within @p radius of the segment a–b to @p zone if @p zone has priority
   /// (a lower value) over the cell's current zone.
@@ -85,7 +88,6 @@ class ZoneMap {
   }
   const Eigen::Vector2d& lo() const { return lo_; }
   Eigen::Vector2d hi() const { return lo_ + cell_ * Eigen::Vector2d(nx_, ny_); }
-  double cell() const { return cell_; }
 
  private:
   Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();

@@ -32,7 +32,6 @@ struct SequenceStats {
   int frames = 0;
   std::vector<uint32_t> points;                   ///< per frame
   std::map<uint16_t, uint64_t> class_points;      ///< written (noisy) semantic id → points over all frames
-  std::map<uint16_t, uint64_t> true_class_points;  ///< ground-truth semantic id → points
   std::vector<std::array<int, kNumClasses>> nodes;       ///< nodes per class of the sampled frames (written labels)
   std::vector<std::array<int, kNumClasses>> true_nodes;  ///< the same with ground-truth labels
   size_t positives = 0, negatives = 0;            ///< loop pairs written
@@ -42,7 +41,9 @@ struct SequenceStats {
   std::vector<double> lane_shift_offsets;         ///< frames on lane-shift revisits: distance to the nearest earlier frame (m)
 };
 
-/// Refuses a path that is a file, or a folder that is not empty unless @p force; creates DIR, velodyne/, labels/.
+/// Refuses a path that is a file, or a folder that is not empty unless @p force; touches nothing.
+void checkOutputDir(const std::string& dir, bool force);
+/// checkOutputDir(), then creates DIR, velodyne/ and labels/.
 void prepareOutputDir(const std::string& dir, bool force);
 
 /// Writes the whole sequence; @p progress (may be empty) is called with the number of frames written so far.

@@ -43,6 +43,14 @@ struct SimFrame {
   std::vector<uint32_t> true_labels;  ///< ground truth
 };
 
+/// One raw scan with its labels, in the sensor frame of the moment it was taken.
+struct SimScan {
+  std::vector<Eigen::Vector3f> points;
+  std::vector<float> intensity;
+  std::vector<uint32_t> labels;       ///< written labels (with label noise)
+  std::vector<uint32_t> true_labels;  ///< ground truth
+};
+
 class Simulator {
  public:
   /// Generates the world, plans the route and drives it (about a second for a 2,000-frame urban sequence).
@@ -59,6 +67,13 @@ class Simulator {
   /// Frame @p i: raw scans max(0, i − scansPerFrame() + 1) … i merged in the LiDAR frame of frame i (so the first
   /// frames of an accumulating sensor hold fewer scans). Pure and thread-safe: any thread may compute any frame.
   SimFrame frame(int i) const;
+  /// The first raw scan frame @p i merges: max(0, i − scansPerFrame() + 1).
+  int firstScan(int i) const;
+  /// Raw scan @p j with its labels (the work of a frame; pure and thread-safe).
+  SimScan scan(int j) const;
+  /// Frame @p i from its raw scans: @p scans[k] must be scan(firstScan(i) + k), for every scan up to i. Writers
+  /// that produce consecutive frames reuse each scan for every frame that merges it.
+  SimFrame merge(int i, const std::vector<const SimScan*>& scans) const;
 
  private:
   SimConfig config_;
