@@ -1,12 +1,12 @@
 // `sgtllc run SEQ_DIR` / `sgtllc run --nodes NODE_DIR`: streams a sequence through the online detector.
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.h"
 #include "common.h"
 #include "sgtllc/eval/frame_source.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/io/loops_csv.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -21,24 +21,7 @@ struct RunOptions {
   bool force = false;
 };
 
-struct Loop {
-  std::string query, match;
-  double score_t = 0.0, score_c = 0.0;
-  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
-};
-
-std::string csv(const std::vector<Loop>& loops) {
-  std::ostringstream s;
-  s << "query,match,score,score_c,r11,r12,r13,tx,r21,r22,r23,ty,r31,r32,r33,tz\n";
-  for (const Loop& l : loops) {
-    s << l.query << "," << l.match << "," << fixed(l.score_t, 6) << "," << fixed(l.score_c, 6);
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 4; ++c) s << "," << fixed(l.T(r, c), 6);
-    }
-    s << "\n";
-  }
-  return s.str();
-}
+using Loop = io::LoopRecord;
 
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
@@ -59,21 +42,25 @@ void runSequence(const RunOptions& o) {
       warnAboutInput(source.name(index), stats, r.num_nodes);
     }
     if (const Candidate* c = r.loop()) {
-      loops.push_back(Loop{source.name(index), source.name(static_cast<size_t>(c->frame)), c->match.score_t,
-                           c->match.score_c, c->match.T_match_query});
+      Loop& l = loops.emplace_back();
+      l.query = source.name(index);
+      l.match = source.name(static_cast<size_t>(c->frame));
+      l.score = c->match.score_t;
+      l.score_c = c->match.score_c;
+      l.T_match_query = c->match.T_match_query;
       if (!o.json) {
         progress.clear();
-        const Loop& l = loops.back();
-        std::cout << "loop " << l.query << " -> " << l.match << "  score " << fixed(l.score_t, 3) << "  score_c "
-                  << fixed(l.score_c, 3) << "  t = (" << fixed(l.T(0, 3), 2) << ", " << fixed(l.T(1, 3), 2) << ", "
-                  << fixed(l.T(2, 3), 2) << ") m\n"
+        const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();
+        std::cout << "loop " << l.query << " -> " << l.match << "  score " << fixed(l.score, 3) << "  score_c "
+                  << fixed(l.score_c, 3) << "  t = (" << fixed(t.x(), 2) << ", " << fixed(t.y(), 2) << ", "
+                  << fixed(t.z(), 2) << ") m\n"
                   << std::flush;
       }
     }
     progress.update(index + 1, std::to_string(loops.size()) + " loops");
   });
   progress.finish();
-  if (!o.out.empty()) writeFileAtomically(o.out, csv(loops));
+  if (!o.out.empty()) writeFileAtomically(o.out, io::loopsCsvText(loops));
 
   const int n = detector.numFrames();
   const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;
@@ -82,9 +69,9 @@ void runSequence(const RunOptions& o) {
     for (const Loop& l : loops) {
       list.push_back({{"query", l.query},
                       {"match", l.match},
-                      {"score", l.score_t},
+                      {"score", l.score},
                       {"score_c", l.score_c},
-                      {"T_match_query", matrixJson(l.T)}});
+                      {"T_match_query", matrixJson(l.T_match_query)}});
     }
     const Json out = {{"sequence", o.nodes.empty() ? o.sequence : o.nodes},
                                 {"frames", n},

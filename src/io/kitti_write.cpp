@@ -64,7 +64,7 @@ void writeKittiBin(const std::string& path, const std::vector<Eigen::Vector3f>& 
 
 void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels) { writeWords(path, labels); }
 
-void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>& poses) {
+std::string kittiPosesText(const std::vector<Eigen::Matrix4d>& poses) {
   std::string text;
   for (const Eigen::Matrix4d& T : poses) {
     for (int k = 0; k < 12; ++k) {
@@ -73,7 +73,11 @@ void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>
     }
     text += '\n';
   }
-  detail::writeFile(path, text);
+  return text;
+}
+
+void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>& poses) {
+  detail::writeFile(path, kittiPosesText(poses));
 }
 
 void writeKittiCalib(const std::string& path, const std::array<Eigen::Matrix<double, 3, 4>, 4>& P,

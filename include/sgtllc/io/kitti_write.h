@@ -21,6 +21,8 @@ void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels
 /// One row-major 3×4 [R|t] per line (the top three rows of each 4×4). Numbers are written in their shortest form
 /// that reads back to the same double, so readKittiPoses() returns exactly these poses.
 void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>& poses);
+/// The text writeKittiPoses() writes (for writers that add their own file handling, e.g. trajectory.h).
+std::string kittiPosesText(const std::vector<Eigen::Matrix4d>& poses);
 
 /// `P0:` … `P3:` (3×4 projection matrices) and `Tr:` (velodyne → cam0, top three rows), `%.12e` as KITTI's.
 void writeKittiCalib(const std::string& path, const std::array<Eigen::Matrix<double, 3, 4>, 4>& P,

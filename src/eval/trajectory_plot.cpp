@@ -1,0 +1,74 @@
+// Top view of trajectories and loop edges (trajectory_plot.h), on the report's Cairo figure (src/plot/figure.h).
+#include "sgtllc/eval/trajectory_plot.h"
+
+#include <array>
+
+#include "figure.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc::eval {
+namespace {
+
+/// The two plotted coordinates of a pose: (x, y) in the LiDAR frame, (x, z) in KITTI's cam0 frame (y points down,
+/// so x–z is the ground plane seen from above, as the KITTI devkit plots it).
+std::array<double, 2> planar(const Eigen::Isometry3d& T, bool cam0_axes) {
+  const Eigen::Vector3d& t = T.translation();
+  return {t.x(), cam0_axes ? t.z() : t.y()};
+}
+
+void addTrajectory(plot::Figure& fig, const std::vector<Eigen::Isometry3d>& poses, bool cam0_axes,
+                   const std::string& label, plot::Color color, double width, bool dashed) {
+  if (poses.empty()) return;
+  std::vector<double> x, y;
+  x.reserve(poses.size());
+  y.reserve(poses.size());
+  for (const Eigen::Isometry3d& T : poses) {
+    const auto p = planar(T, cam0_axes);
+    x.push_back(p[0]);
+    y.push_back(p[1]);
+  }
+  fig.line(x, y, label, color, width, dashed);
+}
+
+}  // namespace
+
+void plotTrajectories(const std::string& path, const TrajectoryPlotData& data) {
+  const std::vector<Eigen::Isometry3d>& anchor = !data.ground_truth.empty() ? data.ground_truth
+                                                 : !data.corrected.empty()  ? data.corrected
+                                                                            : data.odometry;
+  std::vector<std::array<double, 4>> accepted, rejected;
+  for (const PlotLoop& l : data.loops) {
+    const int n = static_cast<int>(anchor.size());
+    if (l.from < 0 || l.to < 0 || l.from >= n || l.to >= n) {
+      throw Error("cannot write " + path + ": loop " + std::to_string(l.from) + " -> " + std::to_string(l.to) +
+                  " names a frame outside the trajectory's " + std::to_string(n) + " poses");
+    }
+    const auto a = planar(anchor[static_cast<size_t>(l.from)], data.cam0_axes);
+    const auto b = planar(anchor[static_cast<size_t>(l.to)], data.cam0_axes);
+    (l.accepted ? accepted : rejected).push_back({a[0], a[1], b[0], b[1]});
+  }
+
+  plot::Figure fig(1000, 900);
+  fig.title(data.title);
+  fig.xlabel("x (m)");
+  fig.ylabel(data.cam0_axes ? "z (m)" : "y (m)");
+  fig.equalAspect();
+  addTrajectory(fig, data.ground_truth, data.cam0_axes, "ground truth", plot::Color{0.55, 0.55, 0.55}, 3.0, false);
+  addTrajectory(fig, data.odometry, data.cam0_axes, "odometry", plot::Color{0.90, 0.55, 0.0}, 1.5, true);
+  addTrajectory(fig, data.corrected, data.cam0_axes, "corrected", plot::Color{0.0, 0.45, 0.70}, 1.5, false);
+  if (!accepted.empty()) {
+    fig.segments(accepted, "accepted loop (" + std::to_string(accepted.size()) + ")", plot::Color{0.0, 0.65, 0.2},
+                 1.5);
+  }
+  if (!rejected.empty()) {
+    fig.segments(rejected, "rejected loop (" + std::to_string(rejected.size()) + ")", plot::Color{0.9, 0.0, 0.0},
+                 1.5);
+  }
+  if (!anchor.empty()) {
+    const auto s = planar(anchor.front(), data.cam0_axes);
+    fig.points({s[0]}, {s[1]}, "start", plot::Color{0.0, 0.0, 0.0}, 6.0);
+  }
+  fig.savePng(path);
+}
+
+}  // namespace sgtllc::eval

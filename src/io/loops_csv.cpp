@@ -1,0 +1,154 @@
+// The loops CSV of `sgtllc run --out` (loops_csv.h): writer and reader share the column list below.
+#include "sgtllc/io/loops_csv.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+#include <tuple>
+#include <unordered_map>
+
+#include <Eigen/SVD>
+
+#include "file_util.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc::io {
+namespace {
+
+constexpr size_t kColumns = 16;
+constexpr size_t kFirstMatrixColumn = 4;
+constexpr double kOrthonormalTolerance = 1e-3;  // six decimals leave |RᵀR − I| ~ 1e-6
+
+void appendFixed6(std::string& out, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.6f", v);
+  out += buf;
+}
+
+std::vector<std::string_view> splitCommas(std::string_view line) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  std::vector<std::string_view> fields;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = line.find(',', start);
+    fields.push_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) return fields;
+    start = comma + 1;
+  }
+}
+
+std::string headerLine() {
+  std::string h;
+  for (const std::string& c : loopsCsvColumns()) h += (h.empty() ? "" : ",") + c;
+  return h;
+}
+
+}  // namespace
+
+const std::vector<std::string>& loopsCsvColumns() {
+  static const std::vector<std::string> columns = {"query", "match", "score", "score_c", "r11", "r12",
+                                                   "r13",   "tx",    "r21",   "r22",     "r23", "ty",
+                                                   "r31",   "r32",   "r33",   "tz"};
+  return columns;
+}
+
+std::string loopsCsvText(const std::vector<LoopRecord>& loops) {
+  std::string out = headerLine() + "\n";
+  for (const LoopRecord& l : loops) {
+    out += l.query + "," + l.match + ",";
+    appendFixed6(out, l.score);
+    out += ',';
+    appendFixed6(out, l.score_c);
+    for (int k = 0; k < 12; ++k) {
+      out += ',';
+      appendFixed6(out, l.T_match_query(k / 4, k % 4));
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::vector<LoopRecord> readLoopsCsv(const std::string& path, const std::vector<std::string>& frame_names) {
+  const std::string text = detail::readWholeFile(path);
+  std::unordered_map<std::string_view, int> index_of;
+  for (size_t i = 0; i < frame_names.size(); ++i) index_of.emplace(frame_names[i], static_cast<int>(i));
+  const std::vector<std::string>& columns = loopsCsvColumns();
+
+  std::vector<LoopRecord> loops;
+  size_t pos = 0, line_no = 0;
+  bool header_seen = false;
+  while (pos < text.size()) {
+    ++line_no;
+    std::string_view line = detail::nextLine(text, pos);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string at = path + ":" + std::to_string(line_no);
+    if (!header_seen) {
+      if (line != headerLine()) {
+        throw Error(at + ": header '" + std::string(line) + "' is not the loops CSV header '" + headerLine() + "'");
+      }
+      header_seen = true;
+      continue;
+    }
+    if (line.empty()) continue;
+    const std::vector<std::string_view> f = splitCommas(line);
+    if (f.size() != kColumns) {
+      throw Error(at + ": " + std::to_string(f.size()) + " columns, expected " + std::to_string(kColumns) +
+                  " (" + headerLine() + ")");
+    }
+    LoopRecord l;
+    l.query = std::string(f[0]);
+    l.match = std::string(f[1]);
+    for (const auto& [name, index, role] : {std::tuple{&l.query, &l.query_index, "query"},
+                                            std::tuple{&l.match, &l.match_index, "match"}}) {
+      const auto it = index_of.find(*name);
+      if (it == index_of.end()) {
+        throw Error(at + ": unknown " + role + " frame '" + *name + "' (not one of the sequence's " +
+                    std::to_string(frame_names.size()) + " frames)");
+      }
+      *index = it->second;
+    }
+    if (l.query_index == l.match_index) throw Error(at + ": loop of frame '" + l.query + "' with itself");
+    double v[kColumns] = {};
+    for (size_t k = 2; k < kColumns; ++k) {
+      if (!detail::parseReal(f[k], v[k]) || !std::isfinite(v[k])) {
+        throw Error(at + ": column " + columns[k] + ": '" + std::string(f[k]) + "' is not a finite number");
+      }
+    }
+    l.score = v[2];
+    l.score_c = v[3];
+    for (int k = 0; k < 12; ++k) l.T_match_query(k / 4, k % 4) = v[kFirstMatrixColumn + static_cast<size_t>(k)];
+    const Eigen::Matrix3d R = l.T_match_query.topLeftCorner<3, 3>();
+    const double err = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (err > kOrthonormalTolerance || R.determinant() <= 0.0) {
+      throw Error(at + ": r11..r33 is not a rotation (|RᵀR − I| = " + std::to_string(err) + ", det " +
+                  std::to_string(R.determinant()) + ")");
+    }
+    loops.push_back(l);
+  }
+  if (!header_seen) throw Error(path + ": empty file (expected the loops CSV header '" + headerLine() + "')");
+  return loops;
+}
+
+std::vector<backend::Edge> loopEdges(const std::vector<LoopRecord>& loops, const backend::Matrix6d& information) {
+  std::vector<backend::Edge> edges;
+  edges.reserve(loops.size());
+  for (const LoopRecord& l : loops) {
+    if (l.query_index < 0 || l.match_index < 0) {
+      throw Error("loop " + l.query + " -> " + l.match + " has no frame indices (read it with readLoopsCsv)");
+    }
+    backend::Edge e;
+    e.from = l.match_index;
+    e.to = l.query_index;
+    // Nearest rotation (Frobenius norm): U·Vᵀ of the SVD; the determinant was checked positive when reading.
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(l.T_match_query.topLeftCorner<3, 3>(),
+                                                Eigen::ComputeFullU | Eigen::ComputeFullV);
+    e.T_from_to.linear() = svd.matrixU() * svd.matrixV().transpose();
+    e.T_from_to.translation() = l.T_match_query.topRightCorner<3, 1>();
+    e.information = information;
+    e.kind = backend::EdgeKind::kLoop;
+    edges.push_back(e);
+  }
+  return edges;
+}
+
+}  // namespace sgtllc::io
