@@ -11,7 +11,21 @@
 
 #include <gtest/gtest.h>
 
+#include "sgtllc/types.h"
+
 namespace sgtllc::test {
+
+/// The message of the sgtllc::Error that @p f throws; a test failure (and "") if it throws none.
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no sgtllc::Error thrown";
+  return "";
+}
 
 /// Gives each test its own empty directory, named after the suite, the test and the pid (so parallel ctest runs
 /// never share one), and removes it afterwards.
