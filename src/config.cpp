@@ -1,60 +1,97 @@
 #include "sgtllc/config.h"
 
+#include <charconv>
 #include <cmath>
 #include <string>
 
 namespace sgtllc {
 namespace {
 
-void require(bool ok, const std::string& key, const std::string& what) {
-  if (!ok) throw Error("config: " + key + " " + what);
+/// Shortest text that reads back to @p v, in plain decimals unless that is long: "5", "0.0005", "1e-300", "nan".
+std::string text(double v) {
+  char buf[400];  // fixed notation of the largest double has 309 digits
+  auto res = std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::fixed);
+  if (res.ptr - buf > 24) res = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, res.ptr);
 }
 
-bool finite(double v) { return std::isfinite(v); }
+std::string text(long long v) { return std::to_string(v); }
+
+/// One bound of an interval: its value and whether it is included.
+struct Bound {
+  double value;
+  bool closed = true;
+};
+
+std::string interval(Bound lo, Bound hi) {
+  return (lo.closed ? "[" : "(") + text(lo.value) + ", " + text(hi.value) + (hi.closed ? "]" : ")");
+}
+
+bool inside(double v, Bound lo, Bound hi) {
+  return std::isfinite(v) && (lo.closed ? v >= lo.value : v > lo.value) && (hi.closed ? v <= hi.value : v < hi.value);
+}
+
+[[noreturn]] void outOfRange(const std::string& key, const std::string& value, const std::string& range) {
+  throw ConfigError(key, key + " = " + value + " is out of range " + range);
+}
+
+void checkReal(const std::string& key, double v, Bound lo, Bound hi) {
+  if (!inside(v, lo, hi)) outOfRange(key, text(v), interval(lo, hi));
+}
+
+void checkInt(const std::string& key, int v, long long lo, long long hi) {
+  if (v < lo || v > hi) outOfRange(key, text(static_cast<long long>(v)), "[" + text(lo) + ", " + text(hi) + "]");
+}
+
+// Counts of frames: far beyond any recorded sequence (KITTI 00 has 4,541 frames).
+constexpr long long kMaxFrames = 1000000;
 
 }  // namespace
 
 void Config::validate() const {
+  // Ranges are documented field by field in config.h; keep the two in step.
   for (const auto& [id, cls] : labels.custom_map) {
-    require(cls >= -1 && cls < kNumClasses, "labels.custom_map[" + std::to_string(id) + "]",
-            "must be a class index 0..6 or -1 (dropped), got " + std::to_string(cls));
+    checkInt("labels.custom_map[" + std::to_string(id) + "]", cls, -1, kNumClasses - 1);
   }
   for (int c = 0; c < kNumClasses; ++c) {
     const std::string key = std::string("cluster.") + kClassNames[c];
     const ClassClusterConfig& p = cluster.classes[c];
     // Lower bounds keep voxel cells of points within ±1e6 m inside the exact integer cell range.
-    require(finite(p.voxel) && (p.voxel == 0.0 || p.voxel >= 0.001), key + ".voxel",
-            "must be 0 (no downsampling) or >= 0.001 m");
-    require(finite(p.radius) && p.radius >= 0.001, key + ".radius", "must be >= 0.001 m");
-    require(p.min_size >= 1, key + ".min_size", "must be >= 1");
+    if (p.voxel != 0.0 && !inside(p.voxel, {0.001}, {10.0})) {
+      outOfRange(key + ".voxel", text(p.voxel), "0 (no downsampling) or [0.001, 10]");
+    }
+    checkReal(key + ".radius", p.radius, {0.001}, {10.0});
+    checkInt(key + ".min_size", p.min_size, 1, 1000000);
   }
-  require(cluster.max_neighbors >= 1, "cluster.max_neighbors", "must be >= 1");
-  require(finite(cluster.duplicate_radius) && cluster.duplicate_radius >= 0.0, "cluster.duplicate_radius",
-          "must be >= 0");
-  require(finite(graph.sigma_d) && graph.sigma_d > 0.0, "graph.sigma_d", "must be > 0");
-  require(retrieval.num_candidates >= 1, "retrieval.num_candidates", "must be >= 1");
-  require(retrieval.exclude_recent >= 1, "retrieval.exclude_recent", "must be >= 1 (a frame never matches itself)");
-  require(retrieval.warmup_frames >= 0, "retrieval.warmup_frames", "must be >= 0");
-  require(finite(association.sigma_1) && association.sigma_1 >= -1.0 && association.sigma_1 <= 1.0,
-          "association.sigma_1", "must be a cosine in [-1, 1]");
-  require(finite(association.max_delta_aj) && association.max_delta_aj > 0.0, "association.max_delta_aj",
-          "must be > 0");
-  require(finite(association.sigma_2) && association.sigma_2 >= 0.0, "association.sigma_2", "must be >= 0");
-  require(association.entries >= 1 && association.entries <= 7, "association.entries",
-          "must keep at least one of the v_i, v_j, v_k entries");
+  checkInt("cluster.max_neighbors", cluster.max_neighbors, 1, 10000);
+  checkReal("cluster.duplicate_radius", cluster.duplicate_radius, {0.0}, {100.0});
+  checkReal("graph.sigma_d", graph.sigma_d, {0.0, false}, {1000.0});
+  checkInt("graph.max_nodes", graph.max_nodes, 1, kMaxGraphNodes);
+  checkInt("retrieval.num_candidates", retrieval.num_candidates, 1, 1000);
+  checkInt("retrieval.exclude_recent", retrieval.exclude_recent, 1, kMaxFrames);  // a frame never matches itself
+  checkInt("retrieval.warmup_frames", retrieval.warmup_frames, 0, kMaxFrames);
+  checkReal("association.sigma_1", association.sigma_1, {-1.0}, {1.0});
+  checkReal("association.max_delta_aj", association.max_delta_aj, {0.0, false}, {1.0e6});
+  // S is a share of slots with score ratio and a count of them (at most kNumSlots = 49) with score count.
+  const bool count = association.score == NodeScore::kCount;
+  if (!inside(association.sigma_2, {0.0}, {count ? 49.0 : 1.0})) {
+    outOfRange("association.sigma_2", text(association.sigma_2),
+               count ? "[0, 49] (association.score: count)" : "[0, 1] (association.score: ratio; [0, 49] with count)");
+  }
+  if (association.entries < 1 || association.entries > 7) {
+    throw ConfigError("association.entries", "association.entries must keep at least one of the v_i, v_j, v_k entries");
+  }
   const VerificationConfig& v = verification;
-  require(finite(v.sigma_3) && v.sigma_3 >= 0.0, "verification.sigma_3", "must be >= 0");
-  require(v.min_associations >= 1, "verification.min_associations", "must be >= 1");
-  require(v.ransac_iterations >= 1, "verification.ransac_iterations", "must be >= 1");
-  require(v.ransac_sample_size >= 3, "verification.ransac_sample_size", "must be >= 3 (a rigid fit needs 3 points)");
-  require(finite(v.inlier_threshold) && v.inlier_threshold > 0.0, "verification.inlier_threshold", "must be > 0");
-  require(v.min_inliers >= 1, "verification.min_inliers", "must be >= 1");
-  require(finite(v.min_inlier_fraction) && v.min_inlier_fraction >= 0.0 && v.min_inlier_fraction <= 1.0,
-          "verification.min_inlier_fraction", "must be in [0, 1]");
-  require(finite(v.ransac_confidence) && v.ransac_confidence > 0.0 && v.ransac_confidence <= 1.0,
-          "verification.ransac_confidence", "must be in (0, 1]");
-  require(finite(v.sigma_4), "verification.sigma_4", "must be a finite number");
-  require(threads >= 1 && threads <= kMaxThreads, "threads", "must be in 1.." + std::to_string(kMaxThreads));
+  checkReal("verification.sigma_3", v.sigma_3, {0.0}, {1.0});
+  checkInt("verification.min_associations", v.min_associations, 1, kMaxGraphNodes);
+  checkInt("verification.ransac_iterations", v.ransac_iterations, 1, 10000);
+  checkInt("verification.ransac_sample_size", v.ransac_sample_size, 3, 100);  // a rigid fit needs 3 points
+  checkReal("verification.inlier_threshold", v.inlier_threshold, {0.0, false}, {10.0});
+  checkInt("verification.min_inliers", v.min_inliers, 1, kMaxGraphNodes);
+  checkReal("verification.min_inlier_fraction", v.min_inlier_fraction, {0.0}, {1.0});
+  checkReal("verification.ransac_confidence", v.ransac_confidence, {0.0, false}, {1.0});
+  checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
+  checkInt("threads", threads, 1, kMaxThreads);
 }
 
 }  // namespace sgtllc

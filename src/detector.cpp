@@ -18,8 +18,14 @@ double msSince(Clock::time_point start) {
 }  // namespace
 
 LoopDetector::LoopDetector(const Config& config)
-    : config_(config), extractor_(config.cluster, config.labels), database_(config.retrieval.method) {
+    : config_(config),
+      extractor_(config.cluster, config.labels, config.graph.max_nodes),
+      database_(config.retrieval.method) {
   config_.validate();
+}
+
+int LoopDetector::firstSearchedFrame() const {
+  return std::max(config_.retrieval.exclude_recent, config_.retrieval.warmup_frames);
 }
 
 FrameResult LoopDetector::process(const LabeledCloud& cloud) {
@@ -44,7 +50,11 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   start = Clock::now();
   const RetrievalConfig& rc = config_.retrieval;
   std::vector<RetrievedFrame> retrieved;
-  if (result.frame >= rc.warmup_frames) {
+  if (result.frame < rc.warmup_frames) {
+    result.search = Search::kWarmup;
+  } else if (result.frame < rc.exclude_recent) {
+    result.search = Search::kTooRecent;
+  } else {
     retrieved = database_.query(query.global, result.frame - rc.exclude_recent, rc.num_candidates);
   }
   result.timing.retrieval_ms = msSince(start);
@@ -76,7 +86,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
 
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config) {
   config.validate();
-  const NodeExtractor extractor(config.cluster, config.labels);
+  const NodeExtractor extractor(config.cluster, config.labels, config.graph.max_nodes);
   const auto start = Clock::now();
   NodeExtractionResult q = extractor.extract(query);
   NodeExtractionResult m = extractor.extract(match);

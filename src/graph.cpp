@@ -23,7 +23,16 @@ std::vector<std::pair<int, int>> SemanticGraph::edges() const {
   return out;
 }
 
+void checkNodeCount(size_t count, const GraphConfig& config, const std::string& what) {
+  if (count <= static_cast<size_t>(config.max_nodes)) return;
+  throw Error(what + " has " + std::to_string(count) + " nodes, more than graph.max_nodes = " +
+              std::to_string(config.max_nodes) + " (the graph is dense: memory and time grow with the square of " +
+              "the node count; real scans have 20-70 nodes). Merge or drop nodes, or raise graph.max_nodes (at most " +
+              std::to_string(kMaxGraphNodes) + ")");
+}
+
 SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config) {
+  checkNodeCount(nodes.size(), config);
   // Nodes may come straight from a user (LoopDetector::process(nodes), node files): check what indexing relies on.
   for (size_t i = 0; i < nodes.size(); ++i) {
     if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {

@@ -1,6 +1,7 @@
 #include "sgtllc/node_extraction.h"
 
-#include <stdexcept>
+#include <algorithm>
+#include <numeric>
 #include <string>
 
 #include "sgtllc/clustering.h"
@@ -8,11 +9,17 @@
 namespace sgtllc {
 namespace {
 
-/// Centres of one class's clusters in FEC order; sets *num_clusters.
-std::vector<Eigen::Vector3d> clusterCentres(const std::vector<Eigen::Vector3f>& points,
+/// One cluster: its centre and the number of original points in it.
+struct Cluster {
+  Eigen::Vector3d centre;
+  size_t points = 0;
+};
+
+/// One class's clusters in FEC order; sets *num_clusters.
+std::vector<Cluster> clusterCentres(const std::vector<Eigen::Vector3f>& points,
                                             const ClassClusterConfig& params, const ClusterConfig& config,
                                             int* num_clusters) {
-  std::vector<Eigen::Vector3d> centres;
+  std::vector<Cluster> centres;
   if (points.empty()) return centres;
   if (params.voxel > 0.0) {
     // Minimum sizes count voxels (spec §2); the centre is the mean of the original points by default, which an
@@ -23,7 +30,9 @@ std::vector<Eigen::Vector3d> clusterCentres(const std::vector<Eigen::Vector3f>& 
     for (const auto& members : clusters) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       double count = 0.0;
+      size_t original = 0;
       for (uint32_t v : members) {
+        original += voxels.counts[v];
         if (config.centre == CentreSource::kPoints) {
           sum += voxels.sums[v];
           count += voxels.counts[v];
@@ -32,7 +41,7 @@ std::vector<Eigen::Vector3d> clusterCentres(const std::vector<Eigen::Vector3f>& 
           count += 1.0;
         }
       }
-      centres.push_back(sum / count);
+      centres.push_back(Cluster{sum / count, original});
     }
     *num_clusters = static_cast<int>(clusters.size());
   } else {
@@ -40,22 +49,36 @@ std::vector<Eigen::Vector3d> clusterCentres(const std::vector<Eigen::Vector3f>& 
     for (const auto& members : clusters) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (uint32_t i : members) sum += points[i].cast<double>();
-      centres.push_back(sum / static_cast<double>(members.size()));
+      centres.push_back(Cluster{sum / static_cast<double>(members.size()), members.size()});
     }
     *num_clusters = static_cast<int>(clusters.size());
   }
   return centres;
 }
 
+/// Keeps the @p max_nodes nodes with the most points (ties: the earlier node), in their original order.
+void keepLargest(std::vector<Node>& nodes, const std::vector<size_t>& points, int max_nodes) {
+  std::vector<size_t> order(nodes.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return points[a] > points[b]; });
+  std::vector<uint8_t> keep(nodes.size(), 0);
+  for (int k = 0; k < max_nodes; ++k) keep[order[k]] = 1;
+  size_t out = 0;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (keep[i]) nodes[out++] = nodes[i];
+  }
+  nodes.resize(out);
+}
+
 }  // namespace
 
-NodeExtractor::NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels)
-    : config_(cluster), label_map_(labels) {}
+NodeExtractor::NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes)
+    : config_(cluster), label_map_(labels), max_nodes_(max_nodes) {}
 
 NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   if (cloud.points.size() != cloud.labels.size()) {
-    throw std::invalid_argument("NodeExtractor: " + std::to_string(cloud.points.size()) + " points but " +
-                                std::to_string(cloud.labels.size()) + " labels");
+    throw Error("labelled cloud has " + std::to_string(cloud.points.size()) + " points but " +
+                std::to_string(cloud.labels.size()) + " labels");
   }
   NodeExtractionResult result;
   ExtractionStats& stats = result.stats;
@@ -87,10 +110,12 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   }
 
   const double dup2 = config_.duplicate_radius * config_.duplicate_radius;
+  std::vector<size_t> node_points;  // original points of each accepted node
   for (int c = 0; c < kNumClasses; ++c) {
-    const auto centres = clusterCentres(by_class[c], config_.classes[c], config_, &stats.clusters[c]);
+    const auto clusters = clusterCentres(by_class[c], config_.classes[c], config_, &stats.clusters[c]);
     const size_t first_of_class = result.nodes.size();
-    for (const Eigen::Vector3d& centre : centres) {
+    for (const Cluster& cluster : clusters) {
+      const Eigen::Vector3d& centre = cluster.centre;
       // Same-class duplicate suppression against the centres accepted so far (spec §2).
       bool duplicate = false;
       for (size_t k = first_of_class; k < result.nodes.size() && !duplicate; ++k) {
@@ -101,7 +126,14 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
         continue;
       }
       result.nodes.push_back(Node{centre, c});
+      node_points.push_back(cluster.points);
     }
+  }
+  // Bounded graph size (GraphConfig::max_nodes): a dense scene must not fail a scan, so the smallest clusters go.
+  // The ones with the most points are the large, well-sampled objects that a revisit sees again.
+  if (max_nodes_ > 0 && result.nodes.size() > static_cast<size_t>(max_nodes_)) {
+    stats.capped_nodes = static_cast<int>(result.nodes.size()) - max_nodes_;
+    keepLargest(result.nodes, node_points, max_nodes_);
   }
   return result;
 }

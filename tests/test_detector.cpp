@@ -1,5 +1,6 @@
 // End-to-end tests on the bundled real KITTI 00 scans: the pair decision and pose, robustness to dropped points,
 // rigid self-matching, the online detector on short sequences, and determinism across runs and thread counts.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -122,7 +123,7 @@ TEST_F(KittiPairs, NonFiniteAndUnknownPointsAreDroppedAndCounted) {
   EXPECT_EQ(r.extraction_query.unknown_label_points, 1u);
   EXPECT_TRUE(r.is_loop);
   scan.labels.pop_back();
-  EXPECT_THROW(comparePair(scan, *s52), std::invalid_argument);
+  EXPECT_THROW(comparePair(scan, *s52), Error);
 }
 
 /// frames: 52, 88, `padding` frames without nodes, 850, then optionally 4501 (the revisit of frame 0).
@@ -171,6 +172,20 @@ TEST_F(KittiPairs, NodeInputGivesTheSameResultAsPointInput) {
   }
 }
 
+TEST_F(KittiPairs, ADenseScanKeepsMaxNodesInsteadOfFailing) {
+  const int all = LoopDetector{}.process(*s52).num_nodes;
+  ASSERT_GT(all, 10);
+  Config config;
+  config.graph.max_nodes = 10;
+  LoopDetector detector(config);
+  const FrameResult r = detector.process(*s52);
+  EXPECT_EQ(r.num_nodes, 10);
+  EXPECT_EQ(r.extraction.capped_nodes, all - 10);
+  const PairResult p = comparePair(*s4501, *s52, config);
+  EXPECT_EQ(p.query_nodes.size(), 10u);
+  EXPECT_EQ(p.match_nodes.size(), 10u);
+}
+
 void expectIdentical(const std::vector<FrameResult>& a, const std::vector<FrameResult>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t f = 0; f < a.size(); ++f) {
@@ -206,6 +221,54 @@ TEST_F(KittiPairs, OutputIsIdenticalOnReRunAndAtOneOrTwoThreads) {
   EXPECT_GE(loops, 3);  // the repeated scans and 4501 → 52
   expectIdentical(one, again);
   expectIdentical(one, two);
+}
+
+/// @p n nodes on a 7 m lattice, classes in turn (a graph with triangles, so every frame is describable).
+std::vector<Node> latticeNodes(int n) {
+  std::vector<Node> nodes;
+  for (int k = 0; k < n; ++k) nodes.push_back(Node{Eigen::Vector3d(7.0 * (k % 5), 7.0 * (k / 5), 0.0), k % 7});
+  return nodes;
+}
+
+TEST(LoopDetector, SaysWhyAFrameHasNoCandidates) {
+  // Query q searches frames ≤ q − G: with G = 3 the first three frames cannot be searched, the fourth can.
+  Config config;
+  config.retrieval.exclude_recent = 3;
+  LoopDetector detector(config);
+  EXPECT_EQ(detector.firstSearchedFrame(), 3);
+  for (int f = 0; f < 5; ++f) {
+    const FrameResult r = detector.process(latticeNodes(12));
+    EXPECT_EQ(r.search, f < 3 ? Search::kTooRecent : Search::kSearched) << "frame " << f;
+    EXPECT_EQ(r.candidates.size(), f < 3 ? 0u : static_cast<size_t>(f - 2)) << "frame " << f;
+  }
+  // A warm-up longer than the gap is the reason while it lasts.
+  config.retrieval.warmup_frames = 4;
+  LoopDetector warm(config);
+  EXPECT_EQ(warm.firstSearchedFrame(), 4);
+  for (int f = 0; f < 5; ++f) {
+    EXPECT_EQ(warm.process(latticeNodes(12)).search, f < 4 ? Search::kWarmup : Search::kSearched) << "frame " << f;
+  }
+  // The default gap of 50 frames: a 50-frame sequence can have no candidate at all.
+  EXPECT_EQ(LoopDetector{}.firstSearchedFrame(), 50);
+}
+
+TEST(LoopDetector, BadFramesThrowErrorAndAreNotStored) {
+  Config config;
+  config.graph.max_nodes = 12;
+  LoopDetector detector(config);
+  EXPECT_EQ(detector.process(latticeNodes(12)).num_nodes, 12);  // at the limit
+  try {
+    detector.process(latticeNodes(13));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("13 nodes, more than graph.max_nodes = 12"));
+  }
+  LabeledCloud mismatched;
+  mismatched.points.assign(3, Eigen::Vector3f::Zero());
+  mismatched.labels.assign(2, 50);
+  EXPECT_THROW(detector.process(mismatched), Error);
+  EXPECT_EQ(detector.numFrames(), 1);
+  EXPECT_THROW(comparePair(latticeNodes(13), latticeNodes(3), config), Error);
 }
 
 TEST(LoopDetector, RejectsAnInvalidConfig) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "sgtllc/descriptor.h"
@@ -16,6 +17,7 @@ namespace {
 using sgtllc::GraphConfig;
 using sgtllc::kNumSlots;
 using sgtllc::Node;
+using ::testing::HasSubstr;
 using namespace sgtllc::test;  // test_graph_support.h
 
 // --- Checks shared by the tests ------------------------------------------------------------------------------------
@@ -135,6 +137,23 @@ TEST(Graph, LatticeHasDistancesOfExactlySigmaD) {
     }
   }
   EXPECT_GT(at_sigma, 0);
+}
+
+// --- (c) Bounded size ----------------------------------------------------------------------------------------------
+
+TEST(Graph, MaxNodesIsTheLargestGraphBuilt) {
+  GraphConfig cfg;
+  cfg.max_nodes = 40;
+  EXPECT_EQ(sgtllc::buildGraph(randomNodes(3, 40, false), cfg).size(), 40);
+  try {
+    sgtllc::buildGraph(randomNodes(3, 41, false), cfg);
+    FAIL() << "no error";
+  } catch (const sgtllc::Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("the frame has 41 nodes, more than graph.max_nodes = 40"));
+  }
+  // The default is 1,000: far above real frames (20–70 nodes).
+  EXPECT_NO_THROW(sgtllc::checkNodeCount(1000, GraphConfig{}, "f.txt"));
+  EXPECT_THROW(sgtllc::checkNodeCount(1001, GraphConfig{}, "f.txt"), sgtllc::Error);
 }
 
 }  // namespace

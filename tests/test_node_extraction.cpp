@@ -191,11 +191,36 @@ TEST(NodeExtractor, DuplicateRadiusIsConfigurable) {
   EXPECT_EQ(kept.stats.duplicates_suppressed, 0);
 }
 
+TEST(NodeExtractor, MaxNodesKeepsTheClustersWithTheMostPoints) {
+  // Poles of 30, 50, 20 and 50 points, then a 25-voxel (100-point) fence: with max_nodes = 3 the 20-point pole
+  // and, of the tied 30/50, the 30-point one go; the kept nodes stay in node order (fence first: class order).
+  LabeledCloud cloud;
+  addRing(&cloud, 80, {0, 0, 0}, 0.0f, 30);
+  const Cloud p50a = addRing(&cloud, 80, {10, 0, 0}, 0.0f, 50);
+  addRing(&cloud, 80, {20, 0, 0}, 0.0f, 20);
+  const Cloud p50b = addRing(&cloud, 80, {30, 0, 0}, 0.0f, 50);
+  const Cloud fence = addGrid(&cloud, 51, {0, 10, 0}, kX, kZ, 50, 2);
+  const auto all = NodeExtractor({}, {}, 5).extract(cloud);
+  ASSERT_EQ(all.nodes.size(), 5u);  // at the limit: nothing dropped
+  EXPECT_EQ(all.stats.capped_nodes, 0);
+  const auto capped = NodeExtractor({}, {}, 3).extract(cloud);
+  ASSERT_EQ(capped.nodes.size(), 3u);
+  EXPECT_EQ(capped.stats.capped_nodes, 2);
+  EXPECT_LT((capped.nodes[0].centre - mean(fence)).norm(), 1e-9);
+  EXPECT_LT((capped.nodes[1].centre - mean(p50a)).norm(), 1e-9);
+  EXPECT_LT((capped.nodes[2].centre - mean(p50b)).norm(), 1e-9);
+  // A tie at the cut goes to the earlier node: of the two 50-point poles, max_nodes = 2 keeps the first.
+  const auto two = NodeExtractor({}, {}, 2).extract(cloud);
+  ASSERT_EQ(two.nodes.size(), 2u);
+  EXPECT_LT((two.nodes[1].centre - mean(p50a)).norm(), 1e-9);
+  EXPECT_EQ(NodeExtractor({}, {}, 0).extract(cloud).nodes.size(), 5u);  // 0 = no limit
+}
+
 TEST(NodeExtractor, MismatchedLengthsThrowAndEmptyCloudGivesNoNodes) {
   LabeledCloud cloud;
   cloud.points.assign(3, Eigen::Vector3f::Zero());
   cloud.labels.assign(2, 50);
-  EXPECT_THROW(extract(cloud), std::invalid_argument);
+  EXPECT_THROW(extract(cloud), sgtllc::Error);
   const auto result = extract(LabeledCloud{});
   EXPECT_TRUE(result.nodes.empty());
   EXPECT_EQ(result.stats.input_points, 0u);

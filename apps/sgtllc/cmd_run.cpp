@@ -23,11 +23,31 @@ struct RunOptions {
 
 using Loop = io::LoopRecord;
 
+/// Said once, before the run: a sequence of at most LoopDetector::firstSearchedFrame() frames cannot have a loop.
+void noteShortSequence(const std::string& name, size_t frames, const Config& config) {
+  const RetrievalConfig& rc = config.retrieval;
+  std::cerr << "note: " << name << " has " << frames << (frames == 1 ? " frame" : " frames")
+            << ", so no frame can have loop candidates: ";
+  if (frames < 2) {
+    std::cerr << "a loop needs at least two frames.\n";
+  } else if (rc.warmup_frames > rc.exclude_recent) {
+    std::cerr << "no frame is searched before retrieval.warmup_frames = " << rc.warmup_frames
+              << ". Lower retrieval.warmup_frames in a --config file to search this sequence.\n";
+  } else {
+    std::cerr << "a frame is compared only with frames at least retrieval.exclude_recent = " << rc.exclude_recent
+              << " older. Set retrieval.exclude_recent below " << frames
+              << " in a --config file to search this sequence.\n";
+  }
+}
+
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   if (!o.out.empty()) checkWritable(o.out, o.force);
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   LoopDetector detector(config);
+  if (source.size() <= static_cast<size_t>(detector.firstSearchedFrame())) {
+    noteShortSequence(o.nodes.empty() ? o.sequence : o.nodes, source.size(), config);
+  }
 
   std::vector<Loop> loops;
   std::vector<double> frame_ms, load_ms;
@@ -37,7 +57,8 @@ void runSequence(const RunOptions& o) {
     frame_ms.push_back(r.timing.total_ms());
     load_ms.push_back(loaded.load_ms);
     const ExtractionStats& stats = loaded.stats;
-    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0) {
+    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0 ||
+        stats.capped_nodes > 0) {
       progress.clear();
       warnAboutInput(source.name(index), stats, r.num_nodes);
     }

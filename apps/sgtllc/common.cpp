@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "sgtllc/graph.h"
 #include "sgtllc/io/config_yaml.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
@@ -60,6 +61,7 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
     if (!label_path.empty()) throw Error(path + ": a node file carries its labels; drop the separate label file");
     io::NodeFileStats stats;
     f.nodes = io::readNodesTxt(path, LabelMap(config.labels), &stats);
+    checkNodeCount(f.nodes.size(), config.graph, path);
     f.from_node_file = true;
     f.stats.unknown_label_points = stats.unknown;
     f.load_ms = msSince(start);
@@ -69,7 +71,7 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
   f.points = cloud.points.size();
   f.load_ms = msSince(start);
   start = std::chrono::steady_clock::now();
-  NodeExtractionResult extracted = NodeExtractor(config.cluster, config.labels).extract(cloud);
+  NodeExtractionResult extracted = NodeExtractor(config.cluster, config.labels, config.graph.max_nodes).extract(cloud);
   f.extraction_ms = msSince(start);
   f.nodes = std::move(extracted.nodes);
   f.stats = extracted.stats;
@@ -119,6 +121,10 @@ void warnAboutInput(const std::string& name, const ExtractionStats& stats, int n
   if (stats.unknown_label_points > 0) {
     std::cerr << "warning: " << name << ": ignored " << stats.unknown_label_points
               << " " << unit << " whose label id is not in the configured label set (labels.preset)\n";
+  }
+  if (stats.capped_nodes > 0) {
+    std::cerr << "warning: " << name << ": kept the " << num_nodes << " largest clusters, dropped the "
+              << stats.capped_nodes << " smallest (graph.max_nodes)\n";
   }
   if (num_nodes == 0) {
     std::cerr << "warning: " << name << ": no graph nodes (no clusters of the 7 stable classes); it cannot be a loop\n";

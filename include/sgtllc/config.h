@@ -3,11 +3,18 @@
 ///
 /// Defaults are the spec's [CHOICE] values for KITTI (spec §1–§8). YAML keys mirror the field names one to one
 /// (`cluster.building.min_size`, `verification.sigma_4`, …); `sgtllc config` prints them.
+///
+/// Every numeric field has an allowed range, given in brackets in its comment ("[0, 1]"; a parenthesis marks an
+/// open end). Config::validate() enforces them. Scores and fractions lie in [0, 1], cosines in [-1, 1]; lengths
+/// are bounded by what a LiDAR scan can contain; counts and iterations are bounded so that no configuration can
+/// make a single frame take more than seconds.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <map>
+#include <string>
+#include <utility>
 
 #include "sgtllc/types.h"
 
@@ -36,9 +43,11 @@ enum class CentreSource {
 
 /// Per-class clustering parameters (spec §2 table).
 struct ClassClusterConfig {
-  double voxel = 0.0;   ///< voxel leaf (m); 0 = no downsampling
-  double radius = 1.0;  ///< FEC radius r (m)
-  int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points
+  /// Voxel leaf (m); 0 = no downsampling. 0 or [0.001, 10]: the lower bound keeps the cells of points within
+  /// ±kMaxCoordinate exact integers.
+  double voxel = 0.0;
+  double radius = 1.0;  ///< FEC radius r (m) [0.001, 10]
+  int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points [1, 1000000]
 };
 
 struct ClusterConfig {
@@ -52,13 +61,24 @@ struct ClusterConfig {
       {0.0, 1.0, 20},   // pole
       {0.0, 1.0, 20},   // traffic-sign
   }};
-  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (spec §2)
-  double duplicate_radius = 1.0;   ///< skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one
+  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (spec §2) [1, 10000]
+  /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (spec §2) [0, 100].
+  double duplicate_radius = 1.0;
   CentreSource centre = CentreSource::kPoints;  ///< node centre source (spec §11 [CHOICE])
 };
 
+/// Upper bound of GraphConfig::max_nodes: a graph of this size takes ~36 MB and a pair of them about a second.
+inline constexpr int kMaxGraphNodes = 2000;
+
 struct GraphConfig {
-  double sigma_d = 30.0;           ///< σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (spec §3)
+  /// σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (spec §3) (0, 1000].
+  double sigma_d = 30.0;
+  /// Most nodes one frame's graph may have [1, kMaxGraphNodes = 2000]. The graph is dense: its memory and the
+  /// association time grow with the square of the node count (1,000 nodes: 9 MB per graph). Real scans give
+  /// 20–70 nodes (spec §2), so the default leaves 14× headroom. A scan with more clusters keeps the max_nodes
+  /// with the most points (NodeExtractor; counted in ExtractionStats::capped_nodes); ready-made nodes above it
+  /// (node files, LoopDetector::process(nodes), comparePair) are an error.
+  int max_nodes = 1000;
   /// Let the path i→j→i compete for a slot, as the authors' code; such a winner leaves the slot empty
   /// (spec §3 [CHOICE]).
   bool allow_k_equals_i = false;
@@ -99,9 +119,12 @@ enum class RetrievalMethod {
 };
 
 struct RetrievalConfig {
-  int num_candidates = 15;   ///< K: candidates retrieved per query (spec §5)
-  int exclude_recent = 50;   ///< G: query q searches only frames with index ≤ q − G (spec §5 [CHOICE])
-  int warmup_frames = 0;     ///< no query before this many frames are in the database (authors' code: 150)
+  int num_candidates = 15;   ///< K: candidates retrieved per query (spec §5) [1, 1000]
+  /// G: query q searches only frames with index ≤ q − G (spec §5 [CHOICE]) [1, 1000000]. A sequence of at most G
+  /// frames has no candidates at all (LoopDetector::firstSearchedFrame).
+  int exclude_recent = 50;
+  /// No query before this many frames are in the database (authors' code: 150) [0, 1000000].
+  int warmup_frames = 0;
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
 };
 
@@ -112,9 +135,11 @@ enum class NodeScore {
 };
 
 struct AssociationConfig {
-  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (spec §6)
-  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (spec §6)
-  double sigma_2 = 0.3;          ///< σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6)
+  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (spec §6) [-1, 1]
+  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (spec §6) (0, 1000000]
+  /// σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6). [0, 1] with score ratio; [0, 49] (the slot
+  /// count) with score count.
+  double sigma_2 = 0.3;
   NodeScore score = NodeScore::kRatio;  ///< node similarity form (spec §6)
   /// Sub-vector entries compared, by vertex: bit 0 = v_i, bit 1 = v_j, bit 2 = v_k (ablation: drop one). The
   /// |Δa_j| test applies only to dot-product slots with the v_j entry kept.
@@ -129,17 +154,19 @@ enum class ScoreFormula {
 };
 
 struct VerificationConfig {
-  double sigma_3 = 0.35;          ///< σ_3: skip a candidate if score_c = |LA| / M < σ_3 (spec §7.1)
-  int min_associations = 7;       ///< ... or if |LA| is below this (spec §7.1)
-  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (spec §7.2)
-  int ransac_sample_size = 7;     ///< node pairs drawn per hypothesis (spec §7.2)
+  double sigma_3 = 0.35;          ///< σ_3: skip a candidate if score_c = |LA| / M < σ_3 (spec §7.1) [0, 1]
+  int min_associations = 7;       ///< ... or if |LA| is below this (spec §7.1) [1, kMaxGraphNodes]
+  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (spec §7.2) [1, 10000]
+  int ransac_sample_size = 7;     ///< node pairs drawn per hypothesis (spec §7.2) [3, 100]
   bool sample_with_replacement = true;  ///< draw with replacement, as the authors' code (spec §7.2)
-  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (spec §7.2)
-  int min_inliers = 5;            ///< a hypothesis is accepted only with at least this many inliers (spec §7.2)
-  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (spec §7.2)
+  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (spec §7.2) (0, 10]
+  /// A hypothesis is accepted only with at least this many inliers (spec §7.2) [1, kMaxGraphNodes].
+  int min_inliers = 5;
+  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (spec §7.2) [0, 1]
   /// Adaptive RANSAC: stop once an all-inlier sample of the best hypothesis has been drawn with this probability;
-  /// 1 = always run ransac_iterations, as the authors' code. [deviation: 500 fixed iterations cost ~0.5 ms per
-  /// candidate that passes the gates; at the inlier ratios of true loops (60–80 %, spec §11) ~50 suffice]
+  /// 1 = always run ransac_iterations, as the authors' code. (0, 1]. [deviation: 500 fixed iterations cost
+  /// ~0.5 ms per candidate that passes the gates; at the inlier ratios of true loops (60–80 %, spec §11) ~50
+  /// suffice]
   double ransac_confidence = 0.999;
   /// score_t formula (spec §7.3). [deviation: the spec's [CHOICE] is the paper's n_in / |LA|. Two scans 20–25 m
   /// apart share a few objects; those few associate and agree, so n_in / |LA| is high although most of either
@@ -149,8 +176,11 @@ struct VerificationConfig {
   ScoreFormula score_formula = ScoreFormula::kOverlap;
   /// false = no RANSAC (Table IV "w/o RANSAC"): score_t = score_c and the pose is fitted to all associations.
   bool use_ransac = true;
-  double sigma_4 = 0.3;           ///< σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (spec §7.4, §8)
-  uint32_t seed = 42;             ///< RANSAC random seed; every candidate starts from it (spec §7.2 [CHOICE])
+  /// σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (spec §7.4, §8) [0, 1] (every score_t
+  /// formula, and score_c, lies in [0, 1]).
+  double sigma_4 = 0.3;
+  /// RANSAC random seed; every candidate starts from it (spec §7.2 [CHOICE]) [0, 2³² − 1].
+  uint32_t seed = 42;
 };
 
 /// Upper bound of Config::threads.
@@ -165,10 +195,22 @@ struct Config {
   RetrievalConfig retrieval;
   AssociationConfig association;
   VerificationConfig verification;
-  int threads = 1;  ///< worker threads for candidate verification; results do not depend on it
+  int threads = 1;  ///< worker threads for candidate verification; results do not depend on it [1, kMaxThreads]
 
-  /// Throws sgtllc::Error naming the first field whose value is out of range.
+  /// Throws ConfigError for the first field whose value is out of range, e.g.
+  /// "verification.sigma_4 = 5 is out of range [0, 1]".
   void validate() const;
+};
+
+/// A configuration value out of its allowed range. key() is the YAML key (`verification.sigma_4`), so a reader
+/// of a configuration file can point at the offending line.
+class ConfigError : public Error {
+ public:
+  ConfigError(std::string key, const std::string& message) : Error(message), key_(std::move(key)) {}
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
 };
 
 }  // namespace sgtllc

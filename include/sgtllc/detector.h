@@ -31,11 +31,19 @@ struct Candidate {
   MatchResult match;        ///< association, scores and pose (query → candidate)
 };
 
+/// Whether a frame's query searched the database, or why not (spec §5).
+enum class Search {
+  kSearched,   ///< frames at least retrieval.exclude_recent older existed and were searched
+  kTooRecent,  ///< no stored frame is retrieval.exclude_recent or more frames older: frame < exclude_recent
+  kWarmup,     ///< frame < retrieval.warmup_frames: no query during the warm-up
+};
+
 /// What the detector found for one frame.
 struct FrameResult {
   int frame = -1;                     ///< index given to this frame (0, 1, 2, … in processing order)
   int num_nodes = 0;                  ///< nodes of this frame
   ExtractionStats extraction;         ///< point bookkeeping (zeros when nodes were given)
+  Search search = Search::kSearched;  ///< whether the database was searched; candidates is empty unless kSearched
   std::vector<Candidate> candidates;  ///< the retrieved candidates in ascending frame index, each verified
   int best = -1;                      ///< index into candidates of the highest score_t (ties: higher frame), or −1
   bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
@@ -52,11 +60,18 @@ class LoopDetector {
   /// Throws sgtllc::Error if the configuration is invalid.
   explicit LoopDetector(const Config& config = {});
 
-  /// Processes a labelled scan (points in the sensor frame). Throws std::invalid_argument if the points and
-  /// labels differ in length.
+  /// Processes a labelled scan (points in the sensor frame). Throws sgtllc::Error if the points and labels
+  /// differ in length.
   FrameResult process(const LabeledCloud& cloud);
   /// Processes a frame given as ready-made nodes (centre + stable class), e.g. from an instance segmentation.
+  /// Throws sgtllc::Error for more than graph.max_nodes nodes, a label outside 0..6 or a non-finite centre; the
+  /// frame is then not stored.
   FrameResult process(std::vector<Node> nodes);
+
+  /// Index of the first frame whose query searches the database: max(retrieval.exclude_recent,
+  /// retrieval.warmup_frames). A sequence of at most this many frames gets no candidate at all, so it cannot have a
+  /// loop; every earlier frame's FrameResult::search says why.
+  int firstSearchedFrame() const;
 
   int numFrames() const { return database_.size(); }
   const FrameDatabase& database() const { return database_; }

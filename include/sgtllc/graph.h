@@ -3,7 +3,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -38,10 +40,15 @@ struct SemanticGraph {
   std::vector<std::pair<int, int>> edges() const;
 };
 
+/// Throws sgtllc::Error "WHAT has N nodes, more than graph.max_nodes = M …" if @p count > config.max_nodes: the
+/// graph is dense, so a frame of 10,000 nodes would take ~1 GB and most of a minute (GraphConfig::max_nodes).
+/// Readers of node files call it with the file name as @p what.
+void checkNodeCount(size_t count, const GraphConfig& config, const std::string& what = "the frame");
+
 /// Builds the graph of @p nodes (spec §3): A[p][q] = 1 iff ‖c_p − c_q‖ < σ_d; for every node i and class pair
 /// (m, n) the path i→j→k with l_j = m, l_k = n maximising d_ij + d_jk, ties to the lowest j then the lowest k,
-/// with k ≠ i unless allow_k_equals_i. O(N² · 7). Throws sgtllc::Error for a label outside 0..6 or a
-/// non-finite centre.
+/// with k ≠ i unless allow_k_equals_i. O(N² · 7). Throws sgtllc::Error for more than config.max_nodes nodes
+/// (checkNodeCount), a label outside 0..6 or a non-finite centre.
 SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config);
 
 }  // namespace sgtllc

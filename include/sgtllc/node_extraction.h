@@ -22,6 +22,8 @@ struct ExtractionStats {
   std::array<size_t, kNumClasses> class_points{};  ///< kept points per stable class
   std::array<int, kNumClasses> clusters{};          ///< clusters of at least min_size per class
   int duplicates_suppressed = 0;  ///< clusters skipped because an accepted same-class centre was too close
+  /// Nodes dropped because the scan had more than max_nodes: the ones with the fewest points (GraphConfig::max_nodes).
+  int capped_nodes = 0;
 };
 
 /// Largest |coordinate| (m) a point may have: far beyond any LiDAR range, small enough for exact voxel cells.
@@ -36,14 +38,18 @@ struct NodeExtractionResult {
 /// Turns labelled scans into nodes. Immutable after construction; safe to share between threads.
 class NodeExtractor {
  public:
-  NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels);
+  /// A scan with more than @p max_nodes nodes (after duplicate suppression) keeps the max_nodes whose clusters
+  /// have the most original points, ties to the earlier node, in node order; 0 = no limit. Pass
+  /// Config::graph.max_nodes so that every scan's graph stays within the limit buildGraph enforces.
+  NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes = GraphConfig{}.max_nodes);
 
-  /// Throws std::invalid_argument if points and labels differ in length.
+  /// Throws sgtllc::Error if points and labels differ in length.
   NodeExtractionResult extract(const LabeledCloud& cloud) const;
 
  private:
   ClusterConfig config_;
   LabelMap label_map_;
+  int max_nodes_;
 };
 
 }  // namespace sgtllc

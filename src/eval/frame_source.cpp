@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "sgtllc/graph.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/sequence.h"
 #include "sgtllc/parallel.h"
@@ -23,7 +24,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config) {
   auto seq = std::make_shared<io::SequenceDir>(dir);
-  auto extractor = std::make_shared<NodeExtractor>(config.cluster, config.labels);
+  auto extractor = std::make_shared<NodeExtractor>(config.cluster, config.labels, config.graph.max_nodes);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
   source.loader_ = [seq, extractor](size_t i) {
@@ -53,11 +54,13 @@ FrameSource FrameSource::nodeFiles(const std::string& dir, const Config& config)
   if (source.names_.empty()) throw Error(dir + ": no node files (NAME.txt)");
   auto labels = std::make_shared<LabelMap>(config.labels);
   const std::vector<std::string> names = source.names_;
-  source.loader_ = [dir, names, labels](size_t i) {
+  source.loader_ = [dir, names, labels, graph = config.graph](size_t i) {
     LoadedFrame f;
     const auto start = std::chrono::steady_clock::now();
     io::NodeFileStats stats;
-    f.nodes = io::readNodesTxt((fs::path(dir) / (names.at(i) + ".txt")).string(), *labels, &stats);
+    const std::string path = (fs::path(dir) / (names.at(i) + ".txt")).string();
+    f.nodes = io::readNodesTxt(path, *labels, &stats);
+    checkNodeCount(f.nodes.size(), graph, path);  // ready-made nodes are never dropped silently
     f.stats.unknown_label_points = stats.unknown;
     f.load_ms = msSince(start);
     return f;

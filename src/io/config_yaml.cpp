@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <functional>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -136,6 +137,10 @@ Field customMap() {
           if (!parseInt(scalarText(kv.second), -1, kNumClasses - 1, &cls)) {
             return "classes must be integers -1..6 (id " + std::to_string(id) + ")";
           }
+          // Spellings such as 50 and 050 pass the duplicate-key scan but name the same id.
+          if (c.labels.custom_map.count(static_cast<uint32_t>(id))) {
+            return "id " + std::to_string(id) + " is listed twice";
+          }
           c.labels.custom_map[static_cast<uint32_t>(id)] = static_cast<int>(cls);
         }
         return "";
@@ -195,6 +200,8 @@ const std::vector<Field>& fields() {
                                      {{"points", CentreSource::kPoints}, {"voxels", CentreSource::kVoxels}}));
     f.push_back(number("graph.sigma_d", "σ_d: edge iff centre distance < σ_d (m)",
                        [](Config& c) -> double& { return c.graph.sigma_d; }));
+    f.push_back(integer<int>("graph.max_nodes", "most nodes per frame (a scan keeps its largest clusters)",
+                             [](Config& c) -> int& { return c.graph.max_nodes; }));
     f.push_back(boolean("graph.allow_k_equals_i", "allow the path i→j→i (authors' code)",
                         [](Config& c) -> bool& { return c.graph.allow_k_equals_i; }));
     f.push_back(choice<SubVectorKind>("descriptor.kind", "slot entries: dot products, angles only, lengths only",
@@ -280,23 +287,55 @@ bool isSection(const std::string& prefix) {
   return false;
 }
 
-std::string where(const std::string& source, const YAML::Node& node) {
-  const YAML::Mark m = node.Mark();
-  return m.line >= 0 ? source + ":" + std::to_string(m.line + 1) : source;
+/// 1-based line of @p node, or 0 if yaml-cpp has no mark for it.
+int lineOf(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
+
+std::string where(const std::string& source, int line) {
+  return line > 0 ? source + ":" + std::to_string(line) : source;
 }
 
-void apply(Config& config, const YAML::Node& map, const std::string& prefix, const std::string& source) {
+std::string where(const std::string& source, const YAML::Node& node) { return where(source, lineOf(node)); }
+
+/// yaml-cpp 0.7 keeps both pairs of a repeated key and a plain lookup silently takes one, so every map of the
+/// document, at any depth, is scanned for a key that appears twice.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& prefix, const std::string& source) {
+  if (node.IsSequence()) {
+    for (size_t i = 0; i < node.size(); ++i) {
+      rejectDuplicateKeys(node[i], prefix + "[" + std::to_string(i) + "]", source);
+    }
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> seen;  // key text → line of its first appearance
+  for (const auto& kv : node) {
+    const std::string name = kv.first.IsScalar() ? kv.first.Scalar() : YAML::Dump(kv.first);
+    const std::string key = prefix.empty() ? name : prefix + "." + name;
+    const auto [first, fresh] = seen.emplace(name, lineOf(kv.first));
+    if (!fresh) {
+      throw Error(where(source, kv.first) + ": key '" + key + "' appears twice, at lines " +
+                  std::to_string(first->second) + " and " + std::to_string(lineOf(kv.first)) + "; keep one");
+    }
+    rejectDuplicateKeys(kv.second, key, source);
+  }
+}
+
+/// Line of each key the document set, for range errors found after parsing.
+using KeyLines = std::map<std::string, int>;
+
+void apply(Config& config, const YAML::Node& map, const std::string& prefix, const std::string& source,
+           KeyLines& lines) {
   for (const auto& kv : map) {
     const std::string name = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
     const std::string key = prefix.empty() ? name : prefix + "." + name;
     if (const Field* field = findField(key)) {
+      lines[key] = lineOf(kv.second);
       const std::string err = field->set(config, kv.second);
       if (!err.empty()) {
         throw Error(where(source, kv.second) + ": " + key + ": " + err + ", got '" + YAML::Dump(kv.second) + "'");
       }
     } else if (isSection(key)) {
       if (!kv.second.IsMap()) throw Error(where(source, kv.second) + ": " + key + ": expected a map of keys");
-      apply(config, kv.second, key, source);
+      apply(config, kv.second, key, source, lines);
     } else {
       throw Error(where(source, kv.first) + ": unknown key '" + key + "' (run `sgtllc config` for the valid keys)");
     }
@@ -337,11 +376,16 @@ Config parseConfig(const std::string& yaml, const std::string& source) {
   Config config;
   if (root.IsNull()) return config;
   if (!root.IsMap()) throw Error(source + ": expected a map of configuration keys at the top level");
-  apply(config, root, "", source);
+  rejectDuplicateKeys(root, "", source);
+  KeyLines lines;
+  apply(config, root, "", source, lines);
   try {
     config.validate();
-  } catch (const Error& e) {
-    throw Error(source + ": " + e.what());
+  } catch (const ConfigError& e) {
+    // The key is a field key, or "labels.custom_map[ID]" for one entry of the map.
+    const std::string field = e.key().substr(0, e.key().find('['));
+    const auto line = lines.find(field);
+    throw ConfigError(e.key(), where(source, line == lines.end() ? 0 : line->second) + ": " + e.what());
   }
   return config;
 }

@@ -1,0 +1,169 @@
+// Config ranges: every numeric key rejects a value outside its documented range with a message naming the file,
+// the line, the YAML key and the range, and accepts the range's boundaries.
+#include <cmath>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "sgtllc/detector.h"
+#include "sgtllc/io/config_yaml.h"
+#include "test_config_support.h"
+
+namespace sgtllc {
+namespace {
+
+using ::testing::HasSubstr;
+
+/// A YAML document setting the dotted @p key to @p value; the value sits on the line returned in *line.
+std::string yamlFor(const std::string& key, const std::string& value, int* line = nullptr) {
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  std::string doc;
+  for (size_t d = 0; d < parts.size(); ++d) {
+    doc += std::string(2 * d, ' ') + parts[d] + ":" + (d + 1 < parts.size() ? "\n" : " " + value + "\n");
+  }
+  if (line) *line = static_cast<int>(parts.size());
+  return doc;
+}
+
+std::string errorOf(const std::string& yaml) { return test::configErrorOf(yaml); }
+
+/// One numeric key: values that must load, values that must not, and the range the message states.
+struct Range {
+  std::string key;
+  std::vector<std::string> good;  ///< the boundaries (and, for open ends, a value just inside)
+  std::vector<std::string> bad;   ///< written as the message prints them (shortest round-trip text)
+  std::string range;              ///< "[0, 1]"; or, for a check made while parsing, the parser's message
+  bool parse_level = false;       ///< the YAML reader rejects the value before Config::validate() sees it
+};
+
+std::vector<Range> ranges() {
+  std::vector<Range> r;
+  for (const char* c : kClassNames) {
+    const std::string p = std::string("cluster.") + c + ".";
+    r.push_back({p + "voxel", {"0", "0.001", "10"}, {"-1", "0.0005", "10.5"}, "0 (no downsampling) or [0.001, 10]"});
+    r.push_back({p + "radius", {"0.001", "10"}, {"0", "-1", "11"}, "[0.001, 10]"});
+    r.push_back({p + "min_size", {"1", "1000000"}, {"0", "-5", "1000001"}, "[1, 1000000]"});
+  }
+  r.push_back({"cluster.max_neighbors", {"1", "10000"}, {"0", "10001"}, "[1, 10000]"});
+  r.push_back({"cluster.duplicate_radius", {"0", "100"}, {"-0.5", "100.5"}, "[0, 100]"});
+  r.push_back({"graph.sigma_d", {"1e-09", "1000"}, {"0", "-3", "1000.5"}, "(0, 1000]"});
+  r.push_back({"graph.max_nodes", {"1", "2000"}, {"0", "2001"}, "[1, 2000]"});
+  r.push_back({"retrieval.num_candidates", {"1", "1000"}, {"0", "1001", "1000000000"}, "[1, 1000]"});
+  r.push_back({"retrieval.exclude_recent", {"1", "1000000"}, {"0", "1000001"}, "[1, 1000000]"});
+  r.push_back({"retrieval.warmup_frames", {"0", "1000000"}, {"-1", "1000001"}, "[0, 1000000]"});
+  r.push_back({"association.sigma_1", {"-1", "1"}, {"-1.5", "1.5"}, "[-1, 1]"});
+  r.push_back({"association.max_delta_aj", {"1e-09", "1000000"}, {"0", "1000001"}, "(0, 1000000]"});
+  r.push_back({"association.sigma_2", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1] (association.score: ratio"});
+  r.push_back({"verification.sigma_3", {"0", "1"}, {"-0.1", "1.01"}, "[0, 1]"});
+  r.push_back({"verification.min_associations", {"1", "2000"}, {"0", "2001"}, "[1, 2000]"});
+  r.push_back({"verification.ransac_iterations", {"1", "10000"}, {"0", "10001"}, "[1, 10000]"});
+  r.push_back({"verification.ransac_sample_size", {"3", "100"}, {"2", "101"}, "[3, 100]"});
+  r.push_back({"verification.inlier_threshold", {"1e-09", "10"}, {"0", "10.5"}, "(0, 10]"});
+  r.push_back({"verification.min_inliers", {"1", "2000"}, {"0", "2001"}, "[1, 2000]"});
+  r.push_back({"verification.min_inlier_fraction", {"0", "1"}, {"-0.01", "1.5"}, "[0, 1]"});
+  r.push_back({"verification.ransac_confidence", {"1e-09", "1"}, {"0", "1.001"}, "(0, 1]"});
+  r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
+  r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
+               true});
+  r.push_back({"threads", {"1", "256"}, {"0", "257"}, "[1, 256]"});
+  r.push_back({"labels.custom_map", {"{0: -1, 65535: 6}"}, {"{65536: 0}", "{-1: 0}"}, "ids must be integers 0..65535",
+               true});
+  r.push_back({"labels.custom_map", {}, {"{50: 7}", "{50: -2}"}, "classes must be integers -1..6", true});
+  return r;
+}
+
+TEST(ConfigRanges, EveryNumericKeyRejectsValuesOutsideItsRange) {
+  for (const Range& row : ranges()) {
+    for (const std::string& bad : row.bad) {
+      int line = 0;
+      const std::string yaml = yamlFor(row.key, bad, &line);
+      const std::string at = "my.yaml:" + std::to_string(line) + ": " + row.key;
+      const std::string expected =
+          row.parse_level ? at + ": " + row.range : at + " = " + bad + " is out of range " + row.range;
+      EXPECT_THAT(errorOf(yaml), HasSubstr(expected)) << yaml;
+    }
+  }
+}
+
+TEST(ConfigRanges, EveryNumericKeyAcceptsItsBoundaries) {
+  for (const Range& row : ranges()) {
+    for (const std::string& good : row.good) {
+      EXPECT_EQ(errorOf(yamlFor(row.key, good)), "(no error)") << row.key << ": " << good;
+    }
+  }
+}
+
+TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
+  // Every key that `sgtllc config` prints with a number (or the id map) must have a row, so a new field cannot
+  // arrive without a range test.
+  std::set<std::string> tested;
+  for (const Range& row : ranges()) tested.insert(row.key);
+  std::istringstream text(io::configToYaml(Config{}));
+  std::vector<std::string> path;
+  int numeric = 0;
+  for (std::string line; std::getline(text, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const size_t indent = line.find_first_not_of(' ') / 2;
+    const size_t colon = line.find(':');
+    path.resize(indent);
+    path.push_back(line.substr(2 * indent, colon - 2 * indent));
+    std::string value = line.substr(colon + 1);
+    value = value.substr(0, value.find("  #"));
+    value.erase(0, value.find_first_not_of(' '));
+    char* end = nullptr;
+    const bool is_number = !value.empty() && (std::strtod(value.c_str(), &end), *end == '\0');
+    if (!is_number && value.rfind('{', 0) != 0) continue;
+    std::string key;
+    for (const std::string& p : path) key += (key.empty() ? "" : ".") + p;
+    EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
+    ++numeric;
+  }
+  EXPECT_EQ(numeric, 7 * 3 + 22);
+}
+
+TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {
+  EXPECT_EQ(errorOf("association:\n  score: count\n  sigma_2: 49\n"), "(no error)");
+  EXPECT_THAT(errorOf("association:\n  score: count\n  sigma_2: 49.5\n"),
+              HasSubstr("my.yaml:3: association.sigma_2 = 49.5 is out of range [0, 49] (association.score: count)"));
+}
+
+TEST(ConfigRanges, DuplicatedKeysNameTheKeyAndBothLines) {
+  EXPECT_THAT(errorOf("graph:\n  sigma_d: 20\n  max_nodes: 50\n  sigma_d: 25\n"),
+              HasSubstr("my.yaml:4: key 'graph.sigma_d' appears twice, at lines 2 and 4"));
+  EXPECT_THAT(errorOf("threads: 1\nverification:\n  seed: 1\nthreads: 2\n"),
+              HasSubstr("my.yaml:4: key 'threads' appears twice, at lines 1 and 4"));
+  // A whole section given twice, and a repeated key in a flow map.
+  EXPECT_THAT(errorOf("graph:\n  sigma_d: 20\nretrieval:\n  num_candidates: 5\ngraph:\n  max_nodes: 9\n"),
+              HasSubstr("my.yaml:5: key 'graph' appears twice, at lines 1 and 5"));
+  EXPECT_THAT(errorOf("labels:\n  preset: custom\n  custom_map: {50: 0, 70: 2, 50: 1}\n"),
+              HasSubstr("my.yaml:3: key 'labels.custom_map.50' appears twice, at lines 3 and 3"));
+  EXPECT_THAT(errorOf("labels:\n  custom_map: {50: 0, 050: 1}\n"), HasSubstr("id 50 is listed twice"));
+}
+
+TEST(ConfigRanges, TheLibraryNamesTheKeyAndTheRange) {
+  Config config;
+  config.verification.sigma_4 = 5.0;
+  try {
+    LoopDetector detector(config);
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "verification.sigma_4");
+    EXPECT_STREQ(e.what(), "verification.sigma_4 = 5 is out of range [0, 1]");
+  }
+  config = Config{};
+  config.retrieval.num_candidates = 1000000000;
+  EXPECT_THROW(comparePair(std::vector<Node>{}, std::vector<Node>{}, config), ConfigError);
+  config = Config{};
+  config.graph.sigma_d = std::nan("");
+  EXPECT_THROW(config.validate(), ConfigError);
+}
+
+}  // namespace
+}  // namespace sgtllc
