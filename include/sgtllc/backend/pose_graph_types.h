@@ -13,8 +13,9 @@
 namespace sgtllc::backend {
 
 /// 6×6 information matrix of a relative-pose constraint, over the tangent error (δt, δθ): translation in metres
-/// first, then the rotation vector in radians, both in the `from` frame's coordinates after composition.
-/// (g2o's EDGE_SE3:QUAT uses the quaternion's vector part ≈ δθ / 2 instead; the g2o writer converts.)
+/// first, then the rotation vector in radians, of Δ = T_from_to⁻¹ · T_world_from⁻¹ · T_world_to (a right
+/// perturbation, in the `to` frame; g2o's EDGE_SE3 error has the same Δ). (g2o's EDGE_SE3:QUAT uses the
+/// quaternion's vector part ≈ δθ / 2 instead; the g2o writer converts.)
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 /// What produced a constraint.

@@ -1,0 +1,29 @@
+// Internal: the one place that speaks Ceres. Solves a pose graph on SE(3) (unit quaternion × R³ manifold).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/backend/pose_graph_types.h"
+
+namespace sgtllc::backend::internal {
+
+struct SolveSummary {
+  int iterations = 0;
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  bool converged = false;
+};
+
+/// The edge error of pose_graph_types.h: e = (t, rotation vector) of Δ = T_from_to⁻¹ · T_world_from⁻¹ · T_world_to.
+Eigen::Matrix<double, 6, 1> edgeError(const Edge& edge, const Eigen::Isometry3d& T_world_from,
+                                      const Eigen::Isometry3d& T_world_to);
+
+/// Minimises Σ odometry eᵀΩe + Σ loops ρ(eᵀΩe) over @p poses (in place; frame 0 held fixed as the gauge).
+/// @p loops are the edges (of any kind) that get the robust loss.
+SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& loops,
+                   std::vector<Eigen::Isometry3d>& poses, const BackendConfig& config);
+
+}  // namespace sgtllc::backend::internal
