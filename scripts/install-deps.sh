@@ -1,7 +1,7 @@
 #!/bin/sh
 # Installs the Debian 12 packages sgtllc builds with, if any is missing. Needs root or sudo only when installing.
 set -eu
-PACKAGES="cmake ninja-build g++ libeigen3-dev libnanoflann-dev libyaml-cpp-dev liblzf-dev libcli11-dev \
+PACKAGES="cmake ninja-build g++ xz-utils libeigen3-dev libnanoflann-dev libyaml-cpp-dev liblzf-dev libcli11-dev \
 nlohmann-json3-dev libcairo2-dev fonts-dejavu-core libgtest-dev libgmock-dev libbenchmark-dev libceres-dev"
 
 missing=""

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "sgtllc/io/config_yaml.h"
 #include "test_config_support.h"
 #include "test_io_support.h"
@@ -146,6 +148,9 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(code.descriptor.global_mode, GlobalMode::kG2);
   EXPECT_EQ(code.verification.score_formula, ScoreFormula::kLegacy);
   EXPECT_EQ(code.verification.ransac_confidence, 1.0);
+  const Config objects = io::loadConfig(dir + "kitti00-objects.yaml");
+  EXPECT_EQ(objects.labels.preset, LabelPreset::kCustom);
+  EXPECT_EQ(objects.labels.custom_map, (std::map<uint32_t, int>{{10, 0}, {71, 3}, {80, 5}}));
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/io/sequence.h"
+#include "sgtllc/sim/odometry.h"
 #include "sgtllc/sim/sequence_writer.h"
 
 namespace sgtllc::sim {
@@ -77,8 +78,8 @@ TEST_F(SimOutput, TheProjectsReadersReadEveryFrame) {
     io::readKittiBin(seq.binPath(i), &intensity);
     for (float v : intensity) ASSERT_TRUE(v >= 0.0f && v <= 0.99f);
   }
-  for (const char* name : {"poses.txt", "calib.txt", "times.txt", "loop_pairs.txt", "preview_scan.png",
-                           "preview_trajectory.png"}) {
+  for (const char* name : {"poses.txt", "calib.txt", "times.txt", "loop_pairs.txt", "odometry.txt",
+                           "preview_scan.png", "preview_trajectory.png"}) {
     EXPECT_TRUE(fs::is_regular_file(fs::path(dir()) / name)) << name;
   }
 }
@@ -103,6 +104,26 @@ TEST_F(SimOutput, PosesCalibAndTimesAgree) {
     ++n;
   }
   EXPECT_EQ(n, 600);
+}
+
+TEST_F(SimOutput, OdometryIsTheModelsDriftFromTheWrittenPoses) {
+  const Eigen::Matrix4d Tr = io::readKittiCalibTr(dir() + "/calib.txt");
+  const std::vector<Eigen::Matrix4d> truth = io::lidarPoses(io::readKittiPoses(dir() + "/poses.txt"), Tr);
+  const std::vector<Eigen::Matrix4d> odometry = io::lidarPoses(io::readKittiPoses(dir() + "/odometry.txt"), Tr);
+  ASSERT_EQ(odometry.size(), 600u);
+  const std::string odometry_text = slurp(dir() + "/odometry.txt"), poses_text = slurp(dir() + "/poses.txt");
+  EXPECT_EQ(odometry_text.substr(0, odometry_text.find('\n')), poses_text.substr(0, poses_text.find('\n')));
+  const std::vector<Eigen::Matrix4d> model = driftingOdometry(truth, OdometryNoise{}, smallConfig().seed);
+  double length = 0.0;
+  for (size_t i = 0; i < odometry.size(); ++i) {
+    ASSERT_TRUE(odometry[i].isApprox(model[i], 1e-6)) << i;
+    if (i > 0) length += (truth[i].topRightCorner<3, 1>() - truth[i - 1].topRightCorner<3, 1>()).norm();
+  }
+  const double end_error = (odometry.back().topRightCorner<3, 1>() - truth.back().topRightCorner<3, 1>()).norm();
+  EXPECT_NEAR(stats_.path_length, length, 1e-6);
+  EXPECT_NEAR(stats_.odometry_end_error, end_error, 1e-6);
+  EXPECT_GT(end_error, 0.01);  // it drifts, and by no more than 10 % of the path
+  EXPECT_LT(end_error, 0.1 * length);
 }
 
 TEST_F(SimOutput, LoopPairsAgreeWithTheWrittenPoses) {
@@ -160,7 +181,7 @@ TEST_F(SimOutput, SameBytesAtAnyThreadCount) {
     ASSERT_EQ(slurp(entry.path()), slurp(other)) << fs::relative(entry.path(), dir());
     ++files;
   }
-  EXPECT_EQ(files, 2u * 600u + 6u);
+  EXPECT_EQ(files, 2u * 600u + 7u);
 }
 
 TEST(SimWriter, AccumulatedFramesEqualFrameByFrame) {

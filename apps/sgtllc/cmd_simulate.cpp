@@ -29,6 +29,7 @@ struct SimulateOptions {
   double label_noise = sim::kDefaultLabelNoise;
   int revisits = -1;
   int threads = 0;
+  double odometry_drift = 1.0;
   bool force = false;
   bool no_preview = false;
 };
@@ -86,6 +87,9 @@ void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const s
   std::cout << "\nframes by visit:";
   for (const auto& [kind, count] : st.frames_by_kind) std::cout << " " << sim::visitKindName(kind) << " " << count << ";";
   std::cout << "\nloop_pairs.txt: " << st.positives << " loops, " << st.negatives << " non-loops\n";
+  std::cout << "odometry.txt: drifts " << fixed(st.odometry_end_error, 2) << " m by the last frame ("
+            << fixed(100.0 * st.odometry_end_error / std::max(st.path_length, 1e-9), 2) << " % of "
+            << fixed(st.path_length, 0) << " m driven)\n";
 }
 
 void simulate(const SimulateOptions& o) {
@@ -105,6 +109,7 @@ void simulate(const SimulateOptions& o) {
   w.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   w.force = o.force;
   w.previews = !o.no_preview;
+  w.odometry = sim::OdometryNoise::scaled(o.odometry_drift);
   Progress progress("frames", static_cast<size_t>(config.frames));
   const sim::SequenceStats stats =
       sim::writeSequence(simulator, w, [&](int done) { progress.update(static_cast<size_t>(done), ""); });
@@ -148,6 +153,11 @@ void addSimulateCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--revisits", o->revisits, "planned revisits (default: one per 500 frames)")
       ->check(CLI::Range(0, 10000));
+  cmd->add_option("--odometry-drift", o->odometry_drift,
+                  "noise of odometry.txt as a multiple of the default model (about 2 % drift at 1 km); "
+                  "0 = the true motion, up to rounding")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (default: all cores); the output does not depend on it")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--force", o->force, "write into a non-empty folder, overwriting only the simulator's own files");

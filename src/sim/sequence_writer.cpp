@@ -15,6 +15,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/node_extraction.h"
+#include "sgtllc/sim/odometry.h"
 #include "sgtllc/parallel.h"
 #include "sgtllc/sim/preview.h"
 
@@ -115,14 +116,19 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   const Eigen::Matrix4d Tr = io::kittiVelodyneToCam0();
   const Eigen::Matrix4d Tr_inv = Tr.inverse();
   const Eigen::Matrix4d world_to_0 = sim.poses()[0].T_world_lidar.inverse();
-  std::vector<Eigen::Matrix4d> cam(n);
+  std::vector<Eigen::Matrix4d> lidar0(n), cam(n);
   std::vector<double> times(n);
   for (int i = 0; i < n; ++i) {
-    cam[i] = Tr * (world_to_0 * sim.poses()[i].T_world_lidar) * Tr_inv;
+    lidar0[i] = world_to_0 * sim.poses()[i].T_world_lidar;
+    cam[i] = Tr * lidar0[i] * Tr_inv;
     times[i] = sim.poses()[i].time;
   }
   io::writeKittiCalib(dir + "/calib.txt", io::kittiProjections(), Tr);
   io::writeKittiPoses(dir + "/poses.txt", cam);
+  const std::vector<Eigen::Matrix4d> odometry = driftingOdometry(lidar0, options.odometry, sim.config().seed);
+  std::vector<Eigen::Matrix4d> odometry_cam(n);
+  for (int i = 0; i < n; ++i) odometry_cam[i] = Tr * odometry[i] * Tr_inv;
+  io::writeKittiPoses(dir + "/odometry.txt", odometry_cam);
   io::writeKittiTimes(dir + "/times.txt", times);
   LoopPairOptions pair_options;
   pair_options.seed = sim.config().seed;
@@ -132,6 +138,10 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
 
   SequenceStats stats;
   stats.frames = n;
+  for (int i = 1; i < n; ++i) {
+    stats.path_length += (lidar0[i].topRightCorner<3, 1>() - lidar0[i - 1].topRightCorner<3, 1>()).norm();
+  }
+  stats.odometry_end_error = (odometry.back().topRightCorner<3, 1>() - lidar0.back().topRightCorner<3, 1>()).norm();
   for (const LoopPair& p : pairs) ++(p.loop ? stats.positives : stats.negatives);
   revisitStats(sim, lidar, pairs, pair_options.min_gap, stats);
 

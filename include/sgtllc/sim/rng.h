@@ -24,6 +24,7 @@ enum class Stream : uint64_t {
   kLabelNoise,
   kLoopPairs,
   kGround,
+  kOdometry,
 };
 
 /// SplitMix64 finaliser: a strong 64-bit mix (Steele et al.).

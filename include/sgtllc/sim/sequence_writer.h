@@ -3,7 +3,8 @@
 ///
 /// DIR/velodyne/%06d.bin, DIR/labels/%06d.label, DIR/poses.txt (cam0 poses, KITTI convention), DIR/calib.txt
 /// (KITTI 00's P0–P3 and Tr), DIR/times.txt, DIR/loop_pairs.txt (`query candidate label`, 1 = within 3 m, 0 = farther
-/// than 20 m), and two bird's-eye-view PNGs. Only these files are written; nothing is ever deleted.
+/// than 20 m), DIR/odometry.txt (a drifting odometry estimate in the format and frame of poses.txt; odometry.h),
+/// and two bird's-eye-view PNGs. Only these files are written; nothing is ever deleted.
 #pragma once
 
 #include <array>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "sgtllc/sim/loop_pairs.h"
+#include "sgtllc/sim/odometry.h"
 #include "sgtllc/sim/simulator.h"
 #include "sgtllc/types.h"
 
@@ -25,6 +27,7 @@ struct WriteOptions {
   bool force = false;       ///< write into a folder that is not empty (overwriting only the files listed above)
   bool previews = true;     ///< write preview_scan.png and preview_trajectory.png
   int node_stats_every = 10;  ///< count graph nodes (default clustering) on every k-th frame; 0 = never
+  OdometryNoise odometry;     ///< noise of odometry.txt (seeded by the simulator's seed; odometry.h)
 };
 
 /// What was written, for a person to judge its realism.
@@ -39,6 +42,8 @@ struct SequenceStats {
   int opposite_queries = 0;   ///< ... of which at least one candidate faces the other way (yaw difference > 135°)
   std::map<VisitKind, int> frames_by_kind;        ///< frames driven per visit kind
   std::vector<double> lane_shift_offsets;         ///< frames on lane-shift revisits: distance to the nearest earlier frame (m)
+  double path_length = 0.0;          ///< distance driven, sum of the frame-to-frame LiDAR displacements (m)
+  double odometry_end_error = 0.0;   ///< odometry.txt's LiDAR position error at the last frame (m)
 };
 
 /// Refuses a path that is a file, or a folder that is not empty unless @p force; touches nothing.
