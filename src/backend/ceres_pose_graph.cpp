@@ -4,63 +4,11 @@
 #include <memory>
 
 #include <ceres/ceres.h>
-#include <ceres/rotation.h>
+
+#include "relative_pose_cost.h"
 
 namespace sgtllc::backend::internal {
 namespace {
-
-// Pose parameter block: quaternion (x, y, z, w; Eigen's memory order) then translation.
-using PoseBlock = std::array<double, 7>;
-using PoseManifold = ceres::ProductManifold<ceres::EigenQuaternionManifold, ceres::EuclideanManifold<3>>;
-
-PoseBlock toBlock(const Eigen::Isometry3d& T) {
-  const Eigen::Quaterniond q(T.rotation());
-  return {q.x(), q.y(), q.z(), q.w(), T.translation().x(), T.translation().y(), T.translation().z()};
-}
-
-Eigen::Isometry3d fromBlock(const PoseBlock& b) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::Quaterniond(b[3], b[0], b[1], b[2]).normalized().toRotationMatrix();
-  T.translation() = Eigen::Vector3d(b[4], b[5], b[6]);
-  return T;
-}
-
-// Whitened edge error U·e with Ω = UᵀU.
-class RelativePoseCost {
- public:
-  explicit RelativePoseCost(const Edge& edge)
-      : q_measured_inv_(Eigen::Quaterniond(edge.T_from_to.rotation()).conjugate()),
-        t_measured_(edge.T_from_to.translation()),
-        sqrt_information_(edge.information.llt().matrixU()) {}
-
-  template <typename T>
-  bool operator()(const T* from, const T* to, T* residual) const {
-    const Eigen::Map<const Eigen::Quaternion<T>> q_from(from);
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_from(from + 4);
-    const Eigen::Map<const Eigen::Quaternion<T>> q_to(to);
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_to(to + 4);
-    const Eigen::Quaternion<T> q_from_inv = q_from.conjugate();
-    // X = T_from⁻¹ T_to, then Δ = Z⁻¹ X.
-    const Eigen::Quaternion<T> q_x = q_from_inv * q_to;
-    const Eigen::Matrix<T, 3, 1> t_x = q_from_inv * (t_to - t_from);
-    const Eigen::Quaternion<T> q_m = q_measured_inv_.template cast<T>();
-    const Eigen::Quaternion<T> q_delta = q_m * q_x;
-    Eigen::Matrix<T, 6, 1> e;
-    e.template head<3>() = q_m * (t_x - t_measured_.template cast<T>());
-    const T wxyz[4] = {q_delta.w(), q_delta.x(), q_delta.y(), q_delta.z()};
-    T angle_axis[3];
-    ceres::QuaternionToAngleAxis(wxyz, angle_axis);
-    e.template tail<3>() << angle_axis[0], angle_axis[1], angle_axis[2];
-    Eigen::Map<Eigen::Matrix<T, 6, 1>> r(residual);
-    r = sqrt_information_.template cast<T>() * e;
-    return true;
-  }
-
- private:
-  Eigen::Quaterniond q_measured_inv_;
-  Eigen::Vector3d t_measured_;
-  Matrix6d sqrt_information_;
-};
 
 ceres::LossFunction* makeLoss(const BackendConfig& config) {
   const double a = config.loss_scale;
@@ -93,8 +41,7 @@ SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& l
   ceres::Problem problem(problem_options);
   PoseManifold manifold;
   auto addEdge = [&](const Edge& edge, ceres::LossFunction* loss) {
-    auto* cost = new ceres::AutoDiffCostFunction<RelativePoseCost, 6, 7, 7>(new RelativePoseCost(edge));
-    problem.AddResidualBlock(cost, loss, blocks[edge.from].data(), blocks[edge.to].data());
+    problem.AddResidualBlock(new RelativePoseCost(edge), loss, blocks[edge.from].data(), blocks[edge.to].data());
   };
   for (const Edge& e : odometry) addEdge(e, nullptr);
   for (const Edge& e : loops) addEdge(e, makeLoss(config));
@@ -122,6 +69,29 @@ SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& l
   out.initial_cost = summary.initial_cost;
   out.final_cost = summary.final_cost;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
+  return out;
+}
+
+EdgeJacobians edgeJacobians(const Edge& edge, const Eigen::Isometry3d& T_world_from,
+                            const Eigen::Isometry3d& T_world_to, bool automatic) {
+  const PoseBlock from = toBlock(T_world_from), to = toBlock(T_world_to);
+  const double* parameters[2] = {from.data(), to.data()};
+  Eigen::Matrix<double, 6, 7, Eigen::RowMajor> ambient[2];
+  double* jacobians[2] = {ambient[0].data(), ambient[1].data()};
+  EdgeJacobians out;
+  std::unique_ptr<ceres::CostFunction> cost;
+  if (automatic) {
+    cost = std::make_unique<AutoDiffRelativePoseCost>(new RelativePoseError(edge));
+  } else {
+    cost = std::make_unique<RelativePoseCost>(edge);
+  }
+  cost->Evaluate(parameters, out.residual.data(), jacobians);
+  const PoseManifold manifold;
+  Eigen::Matrix<double, 7, 6, Eigen::RowMajor> plus[2];
+  manifold.PlusJacobian(from.data(), plus[0].data());
+  manifold.PlusJacobian(to.data(), plus[1].data());
+  out.from = ambient[0] * plus[0];
+  out.to = ambient[1] * plus[1];
   return out;
 }
 
