@@ -36,38 +36,74 @@ const Scenario& scenario() {
   return s;
 }
 
-void BM_BatchOptimize(benchmark::State& state) {
+PoseGraph scenarioGraph() {
   const Scenario& s = scenario();
   PoseGraph graph = odometryGraph(s.odometry, OdometryNoise{});
   graph.edges.insert(graph.edges.end(), s.loops.begin(), s.loops.end());
+  return graph;
+}
+
+// Batch: the whole graph from the odometry. Arg 1: warm-started from the reduced graph (the default); 0: not.
+void BM_BatchOptimize(benchmark::State& state) {
+  const PoseGraph graph = scenarioGraph();
+  BackendConfig config;
+  config.solver.reduced_warm_start = state.range(0) != 0;
   BackendResult r;
   for (auto _ : state) {
-    r = optimize(graph);
+    r = optimize(graph, config);
     benchmark::DoNotOptimize(r.poses.data());
   }
   state.counters["loops"] = static_cast<double>(r.loops.size());
   state.counters["rejected"] = r.num_rejected;
   state.counters["iterations"] = r.iterations;
 }
-BENCHMARK(BM_BatchOptimize)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BatchOptimize)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
-// One online re-optimisation: every loop but the last already optimised, then the last loop arrives.
+// One online re-optimisation: every loop but the last already closed online, then the last loop arrives.
+// Arg 1: closeLoop on the reduced graph (the default); 0: on the full graph.
 void BM_OnlineCloseLoop(benchmark::State& state) {
   const Scenario& s = scenario();
-  PoseGraphOptimizer before;
+  BackendConfig config;
+  config.online.reduced_graph = state.range(0) != 0;
+  PoseGraphOptimizer before(config);
   for (size_t i = 1; i < s.odometry.size(); ++i) before.addOdometry(s.odometry[i - 1].inverse() * s.odometry[i]);
   for (size_t k = 0; k + 1 < s.loops.size(); ++k) before.addLoop(s.loops[k]);
-  before.optimize();
-  int iterations = 0;
+  if (config.online.reduced_graph) {
+    before.optimizeReduced();
+  } else {
+    before.optimize();
+  }
+  BackendResult r;
   for (auto _ : state) {
     state.PauseTiming();
     PoseGraphOptimizer online = before;
     state.ResumeTiming();
-    iterations = online.closeLoop(s.loops.back()).iterations;
+    r = online.closeLoop(s.loops.back());
   }
-  state.counters["iterations"] = iterations;
+  state.counters["iterations"] = r.iterations;
+  state.counters["poses_solved"] = r.num_poses_solved;
 }
-BENCHMARK(BM_OnlineCloseLoop)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OnlineCloseLoop)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
+// The outlier step's incremental part of a closeLoop: the new loop's consistency with all previous ones (O(n)
+// cycles) and the maximum clique over all.
+void BM_ConsistencyAddAndClique(benchmark::State& state) {
+  const Scenario& s = scenario();
+  OdometryChain chain;
+  for (size_t i = 1; i < s.odometry.size(); ++i) chain.append(s.odometry[i - 1].inverse() * s.odometry[i]);
+  ConsistencyGraph before;
+  for (size_t k = 0; k + 1 < s.loops.size(); ++k) before.add(s.loops[k], chain, LoopConsistency{});
+  size_t clique = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    ConsistencyGraph graph = before;
+    state.ResumeTiming();
+    graph.add(s.loops.back(), chain, LoopConsistency{});
+    clique = graph.maximumClique().size();
+  }
+  state.counters["clique"] = static_cast<double>(clique);
+}
+BENCHMARK(BM_ConsistencyAddAndClique)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

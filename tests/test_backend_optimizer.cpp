@@ -2,7 +2,9 @@
 // determinism at 1 and 2 threads, bad graphs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <tuple>
 
 #include "sgtllc/backend/information.h"
 #include "sgtllc/backend/pose_graph_optimizer.h"
@@ -21,51 +23,88 @@ Eigen::Isometry3d along_x(double x) {
 
 // A straight drive along x with noisy step lengths and one exact loop 0 → N: the least-squares solution spreads
 // the loop's discrepancy evenly, u_i = s_i − c with c = w_l (S − L) / (w_o + N w_l) (docs/backend.md derivation).
-TEST(BackendOptimizer, StraightLineMatchesTheAnalyticSolution) {
-  const int n = 50;
-  std::mt19937 rng(7);
-  std::normal_distribution<double> noise(0.0, 0.05);
-  const double w_o = 100.0, w_l = 400.0, L = n * 1.0;
-  PoseGraph graph;
-  graph.poses.push_back(Eigen::Isometry3d::Identity());
-  std::vector<double> s(n + 1, 0.0);
-  double S = 0.0;
-  for (int i = 1; i <= n; ++i) {
-    s[i] = 1.0 + noise(rng);
-    S += s[i];
+struct StraightLine {
+  static constexpr int n = 50;
+  static constexpr double w_o = 100.0, w_l = 400.0, L = n * 1.0;
+  std::vector<double> s = std::vector<double>(n + 1, 0.0);  ///< step lengths
+  double S = 0.0;                                            ///< their sum
+
+  StraightLine() {
+    std::mt19937 rng(7);
+    std::normal_distribution<double> noise(0.0, 0.05);
+    for (int i = 1; i <= n; ++i) {
+      s[i] = 1.0 + noise(rng);
+      S += s[i];
+    }
+  }
+  Edge step(int i) const {
     Edge e;
     e.from = i - 1;
     e.to = i;
     e.T_from_to = along_x(s[i]);
     e.information = Matrix6d::Identity() * w_o;
-    graph.edges.push_back(e);
-    graph.poses.push_back(graph.poses.back() * e.T_from_to);
+    return e;
   }
-  Edge loop;
-  loop.from = 0;
-  loop.to = n;
-  loop.T_from_to = along_x(L);
-  loop.information = Matrix6d::Identity() * w_l;
-  loop.kind = EdgeKind::kLoop;
-  graph.edges.push_back(loop);
+  Edge loop() const {
+    Edge e;
+    e.from = 0;
+    e.to = n;
+    e.T_from_to = along_x(L);
+    e.information = Matrix6d::Identity() * w_l;
+    e.kind = EdgeKind::kLoop;
+    return e;
+  }
+  static BackendConfig config() {  // plain least squares, run to machine precision
+    BackendConfig c;
+    c.loop_loss = RobustLoss::kNone;
+    c.solver.function_tolerance = 1e-16;
+    c.solver.parameter_tolerance = 1e-16;
+    return c;
+  }
+  double c() const { return w_l * (S - L) / (w_o + n * w_l); }
+  /// Worst deviation of x from the analytic solution, and worst of the other coordinates and the rotation.
+  std::pair<double, double> errors(const std::vector<Eigen::Isometry3d>& poses) const {
+    double x = 0.0, worst_x = 0.0, worst_other = 0.0;
+    for (int i = 1; i <= n; ++i) {
+      x += s[i] - c();
+      worst_x = std::max(worst_x, std::abs(poses[i].translation().x() - x));
+      worst_other = std::max({worst_other, poses[i].translation().tail<2>().norm(),
+                              Eigen::AngleAxisd(poses[i].rotation()).angle()});
+    }
+    return {worst_x, worst_other};
+  }
+};
 
-  BackendConfig config;
-  config.loop_loss = RobustLoss::kNone;
-  config.solver.function_tolerance = 1e-16;  // run the linear problem to machine precision
-  config.solver.parameter_tolerance = 1e-16;
-  const BackendResult r = optimize(graph, config);
-  ASSERT_EQ(r.num_accepted, 1);
-  const double c = w_l * (S - L) / (w_o + n * w_l);
-  double x = 0.0, worst_x = 0.0, worst_other = 0.0;
-  for (int i = 1; i <= n; ++i) {
-    x += s[i] - c;
-    worst_x = std::max(worst_x, std::abs(r.poses[i].translation().x() - x));
-    worst_other = std::max({worst_other, r.poses[i].translation().tail<2>().norm(),
-                            Eigen::AngleAxisd(r.poses[i].rotation()).angle()});
+TEST(BackendOptimizer, StraightLineMatchesTheAnalyticSolution) {
+  const StraightLine line;
+  PoseGraph graph;
+  graph.poses.push_back(Eigen::Isometry3d::Identity());
+  for (int i = 1; i <= line.n; ++i) {
+    graph.edges.push_back(line.step(i));
+    graph.poses.push_back(graph.poses.back() * graph.edges.back().T_from_to);
   }
+  graph.edges.push_back(line.loop());
+  const BackendResult r = optimize(graph, StraightLine::config());
+  ASSERT_EQ(r.num_accepted, 1);
+  const auto [worst_x, worst_other] = line.errors(r.poses);
   EXPECT_LT(worst_x, 1e-9);
   EXPECT_LT(worst_other, 1e-12);
-  EXPECT_GT(std::abs(c * n), 0.1);  // the correction is not negligible
+  EXPECT_GT(std::abs(line.c() * line.n), 0.1);  // the correction is not negligible
+}
+
+// The same graph on the reduced graph: its anchors are frames 0 and N only, so the whole drive is one composed
+// edge and every frame in between is placed from the two anchors. The problem along x is linear, so the
+// placement is exact.
+TEST(BackendOptimizer, ReducedGraphPlacesTheChainExactlyOnAStraightLine) {
+  const StraightLine line;
+  PoseGraphOptimizer reduced(StraightLine::config());
+  for (int i = 1; i <= line.n; ++i) reduced.addOdometry(line.step(i).T_from_to, line.step(i).information);
+  const BackendResult r = reduced.closeLoop(line.loop());
+  ASSERT_TRUE(r.reduced);
+  EXPECT_EQ(r.num_poses_solved, 2);
+  const auto [worst_x, worst_other] = line.errors(r.poses);
+  EXPECT_LT(worst_x, 1e-9);
+  EXPECT_LT(worst_other, 1e-12);
 }
 
 struct Drive {
@@ -179,31 +218,105 @@ TEST(BackendOptimizer, IdenticalAtOneAndTwoThreadsAndOnRerun) {
   EXPECT_GT(a.num_rejected, 0);
 }
 
-// Online: odometry frame by frame, re-optimising at every loop, ends where the batch does.
-TEST(BackendOptimizer, OnlineEndsAtTheBatchResult) {
-  const Drive d = simulatedDrive(1300, 5);
-  const BackendResult batch = optimize(d.graph);
+// Over the frames of @p a (the frames after the last loop do not move the earlier ones).
+double worstTranslation(const std::vector<Eigen::Isometry3d>& a, const std::vector<Eigen::Isometry3d>& b) {
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) worst = std::max(worst, (a[i].translation() - b[i].translation()).norm());
+  return worst;
+}
+
+// (from, to, decision) of every loop, sorted: online and batch receive the loops in different orders.
+std::vector<std::tuple<int, int, LoopDecision>> decisions(const BackendResult& r) {
+  std::vector<std::tuple<int, int, LoopDecision>> out;
+  for (const LoopReport& l : r.loops) out.emplace_back(l.from, l.to, l.decision);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Online: odometry frame by frame, closeLoop at every loop (on the reduced graph, the default, or on the full
+// graph), then optimize() at the end.
+struct OnlineRun {
+  BackendResult last_close;  ///< the result of the last closeLoop
+  BackendResult final;       ///< optimize() after the last frame
+  int reoptimisations = 0;
+};
+
+OnlineRun runOnline(const Drive& d, const BackendConfig& config) {
   std::vector<std::vector<Edge>> loops_at(d.truth.size());
   for (const Edge& e : d.graph.edges) {
     if (e.kind == EdgeKind::kLoop) loops_at[std::max(e.from, e.to)].push_back(e);
   }
-  PoseGraphOptimizer online;
-  int reoptimisations = 0;
+  PoseGraphOptimizer online(config);
+  OnlineRun run;
   for (size_t i = 0; i < d.truth.size(); ++i) {
     if (i > 0) online.addOdometry(d.graph.edges[i - 1].T_from_to);
     for (const Edge& e : loops_at[i]) {
-      online.closeLoop(e);
-      ++reoptimisations;
+      run.last_close = online.closeLoop(e);
+      ++run.reoptimisations;
     }
   }
-  EXPECT_GT(reoptimisations, 20);
-  ASSERT_EQ(online.numFrames(), static_cast<int>(d.truth.size()));
-  double worst = 0.0;
-  for (size_t i = 0; i < d.truth.size(); ++i) {
-    worst = std::max(worst, (online.poses()[i].translation() - batch.poses[i].translation()).norm());
-  }
-  EXPECT_LT(worst, 1e-3);  // the solver tolerance, from two starting points
-  EXPECT_EQ(online.result().num_rejected, batch.num_rejected);
+  run.final = online.optimize();
+  return run;
+}
+
+// The reduced graph's closeLoop ends within a centimetre of the batch result (first-order placement of the
+// frames between anchors; 6 mm measured), with the same loop decisions; optimize() then is the batch result up
+// to the solver tolerance from two starting points.
+TEST(BackendOptimizer, OnlineEndsAtTheBatchResult) {
+  const Drive d = simulatedDrive(1300, 5);
+  const BackendResult batch = optimize(d.graph);
+  const OnlineRun run = runOnline(d, BackendConfig{});
+  EXPECT_GT(run.reoptimisations, 20);
+  ASSERT_GT(run.last_close.poses.size(), d.truth.size() - 20);  // the last loop is near the end
+  EXPECT_TRUE(run.last_close.reduced);
+  EXPECT_LT(run.last_close.num_poses_solved, static_cast<int>(d.truth.size()) / 3);
+  RecordProperty("reduced_vs_batch_m", std::to_string(worstTranslation(run.last_close.poses, batch.poses)));
+  RecordProperty("final_vs_batch_m", std::to_string(worstTranslation(run.final.poses, batch.poses)));
+  EXPECT_LT(worstTranslation(run.last_close.poses, batch.poses), 0.01);
+  EXPECT_EQ(run.last_close.num_rejected, batch.num_rejected);
+  EXPECT_EQ(decisions(run.last_close), decisions(batch));
+  EXPECT_FALSE(run.final.reduced);
+  EXPECT_LT(worstTranslation(run.final.poses, batch.poses), 1e-4);
+  EXPECT_EQ(run.final.num_rejected, batch.num_rejected);
+}
+
+// With the reduced graph switched off, every closeLoop solves the full graph and also ends at the batch result.
+TEST(BackendOptimizer, OnlineOnTheFullGraphEndsAtTheBatchResult) {
+  const Drive d = simulatedDrive(1300, 5);
+  const BackendResult batch = optimize(d.graph);
+  BackendConfig full;
+  full.online.reduced_graph = false;
+  const OnlineRun run = runOnline(d, full);
+  EXPECT_FALSE(run.last_close.reduced);
+  EXPECT_EQ(run.last_close.num_poses_solved, static_cast<int>(run.last_close.poses.size()));
+  EXPECT_LT(worstTranslation(run.last_close.poses, batch.poses), 1e-4);
+  EXPECT_EQ(run.last_close.num_rejected, batch.num_rejected);
+}
+
+TEST(BackendOptimizer, OnlineIsIdenticalAtOneAndTwoThreadsAndOnRerun) {
+  const Drive d = simulatedDrive(1000, 5);
+  BackendConfig one, two;
+  one.solver.num_threads = 1;
+  two.solver.num_threads = 2;
+  const OnlineRun a = runOnline(d, one);
+  const OnlineRun b = runOnline(d, two);
+  const OnlineRun c = runOnline(d, one);
+  EXPECT_TRUE(samePoses(a.last_close.poses, b.last_close.poses));
+  EXPECT_TRUE(samePoses(a.last_close.poses, c.last_close.poses));
+  EXPECT_TRUE(samePoses(a.final.poses, b.final.poses));
+  EXPECT_TRUE(samePoses(a.final.poses, c.final.poses));
+}
+
+// The warm start from the reduced graph changes the starting point of the full solve only.
+TEST(BackendOptimizer, BatchWithAndWithoutTheReducedWarmStartAgree) {
+  const Drive d = simulatedDrive(1300, 5);
+  BackendConfig cold;
+  cold.solver.reduced_warm_start = false;
+  const BackendResult warm_result = optimize(d.graph);
+  const BackendResult cold_result = optimize(d.graph, cold);
+  EXPECT_LT(worstTranslation(warm_result.poses, cold_result.poses), 1e-4);
+  EXPECT_EQ(warm_result.num_rejected, cold_result.num_rejected);
+  EXPECT_EQ(warm_result.solves, cold_result.solves + 1);
 }
 
 TEST(BackendOptimizer, RejectsMalformedGraphs) {

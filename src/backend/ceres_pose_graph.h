@@ -21,6 +21,18 @@ struct SolveSummary {
 Eigen::Matrix<double, 6, 1> edgeError(const Edge& edge, const Eigen::Isometry3d& T_world_from,
                                       const Eigen::Isometry3d& T_world_to);
 
+/// The whitened residual U·e (Ω = UᵀU) of an edge and its Jacobians over the solver's tangent space of each pose
+/// (quaternion: left perturbation by half the rotation vector; translation: added), i.e. the block Jacobian times
+/// the manifold's PlusJacobian, which is all the solver uses. Analytic, or by automatic differentiation if
+/// @p automatic (the reference the analytic one is tested against).
+struct EdgeJacobians {
+  Eigen::Matrix<double, 6, 1> residual;
+  Matrix6d from;
+  Matrix6d to;
+};
+EdgeJacobians edgeJacobians(const Edge& edge, const Eigen::Isometry3d& T_world_from, const Eigen::Isometry3d& T_world_to,
+                            bool automatic);
+
 /// Minimises Σ odometry eᵀΩe + Σ loops ρ(eᵀΩe) over @p poses (in place; frame 0 held fixed as the gauge).
 /// @p loops are the edges (of any kind) that get the robust loss.
 SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& loops,

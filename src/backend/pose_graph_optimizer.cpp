@@ -3,6 +3,7 @@
 #include <string>
 
 #include "ceres_pose_graph.h"
+#include "reduced_graph.h"
 #include "sgtllc/backend/information.h"
 #include "sgtllc/types.h"
 
@@ -74,6 +75,7 @@ int PoseGraphOptimizer::addOdometry(const Eigen::Isometry3d& T_prev_curr, const 
   e.information = information;
   e.kind = EdgeKind::kOdometry;
   odometry_.push_back(e);
+  odometry_covariance_.push_back(information.inverse());
   chain_.append(T_prev_curr);
   poses_.push_back(poses_.back() * T_prev_curr);
   return frame;
@@ -90,11 +92,16 @@ void PoseGraphOptimizer::addLoop(const Edge& loop) {
 
 const BackendResult& PoseGraphOptimizer::closeLoop(const Edge& loop) {
   addLoop(loop);
-  return optimize();
+  return config_.online.reduced_graph ? optimizeReduced() : optimize();
 }
 
-const BackendResult& PoseGraphOptimizer::optimize() {
+const BackendResult& PoseGraphOptimizer::optimize() { return run(false); }
+
+const BackendResult& PoseGraphOptimizer::optimizeReduced() { return run(true); }
+
+const BackendResult& PoseGraphOptimizer::run(bool reduced) {
   BackendResult result;
+  result.reduced = reduced;
   result.loops.resize(loops_.size());
   for (size_t i = 0; i < loops_.size(); ++i) {
     result.loops[i].from = loops_[i].from;
@@ -103,14 +110,44 @@ const BackendResult& PoseGraphOptimizer::optimize() {
     result.loops[i].consistent_with = consistency_.degree(static_cast<int>(i));
   }
   std::vector<int> kept = consistency_.maximumClique();
-  for (int rounds = 0;; ++rounds) {
+
+  // The reduced graph's anchors include the endpoints of every loop, so the χ² of any loop is exact on it.
+  const bool warm_start = !reduced && config_.solver.reduced_warm_start && !kept.empty();
+  internal::ReducedGraph graph;
+  std::vector<Eigen::Isometry3d> anchor_poses;
+  if (reduced || warm_start) {
+    std::vector<int> anchors;
+    for (const Edge& e : loops_) anchors.insert(anchors.end(), {e.from, e.to});
+    graph = internal::reduceOdometry(odometry_, odometry_covariance_, std::move(anchors));
+    for (int a : graph.anchors) anchor_poses.push_back(poses_[a]);
+  }
+  auto solveKept = [&](bool on_reduced) {
     std::vector<Edge> active;
     for (int i : kept) active.push_back(loops_[i]);
-    const internal::SolveSummary s = internal::solve(odometry_, active, poses_, config_);
+    internal::SolveSummary s;
+    if (on_reduced) {
+      for (Edge& e : active) {
+        e.from = graph.index(e.from);
+        e.to = graph.index(e.to);
+      }
+      s = internal::solve(graph.chains, active, anchor_poses, config_);
+      for (size_t k = 0; k < graph.anchors.size(); ++k) poses_[graph.anchors[k]] = anchor_poses[k];
+      result.num_poses_solved = static_cast<int>(anchor_poses.size());
+    } else {
+      s = internal::solve(odometry_, active, poses_, config_);
+      result.num_poses_solved = numFrames();
+    }
     ++result.solves;
     result.iterations += s.iterations;
     result.final_cost = s.final_cost;
     result.converged = result.converged && s.converged;
+  };
+  if (warm_start) {
+    solveKept(true);
+    internal::redistribute(graph, poses_);
+  }
+  for (int rounds = 0;; ++rounds) {
+    solveKept(reduced);
     if (rounds >= config_.max_rejection_rounds) break;
     // Drop the worst loop over the bound (ties: the first), then re-optimise without it.
     int worst = -1;
@@ -126,6 +163,7 @@ const BackendResult& PoseGraphOptimizer::optimize() {
     result.loops[kept[worst]].decision = LoopDecision::kLargeResidual;
     kept.erase(kept.begin() + worst);
   }
+  if (reduced) internal::redistribute(graph, poses_);
   for (int i : kept) result.loops[i].decision = LoopDecision::kAccepted;
   for (size_t i = 0; i < loops_.size(); ++i) {
     result.loops[i].chi2 = chi2(loops_[i], poses_);

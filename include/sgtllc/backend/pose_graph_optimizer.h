@@ -6,6 +6,9 @@
 ///   1. pairwise consistency of the loops with the odometry → largest consistent set (loop_consistency.h);
 ///   2. Levenberg–Marquardt on SE(3) over odometry (squared) and the kept loops (robust loss), frame 0 fixed;
 ///   3. residual check: while a kept loop's χ² exceeds max_loop_chi2, drop the worst and re-optimise.
+/// optimizeReduced() (what closeLoop() runs by default) does the same steps on the reduced graph of the anchors
+/// (frame 0, the loop endpoints, the newest frame), then places the frames in between: a first-order
+/// approximation of optimize() at a fraction of its cost (docs/backend.md, "Online").
 #pragma once
 
 #include <vector>
@@ -41,14 +44,18 @@ struct BackendResult {
   std::vector<LoopReport> loops;         ///< one per loop, in the order received
   int num_accepted = 0;
   int num_rejected = 0;                  ///< inconsistent + large residual
-  int solves = 0;                        ///< Ceres solves (1 + residual-check rounds that dropped a loop)
+  int solves = 0;  ///< Ceres solves: the reduced warm start if any, 1 + residual-check rounds that dropped a loop
   int iterations = 0;                    ///< Levenberg–Marquardt iterations over all solves
   double final_cost = 0.0;               ///< ½ Σ ρ(eᵀΩe) of the last solve
   bool converged = true;                 ///< every solve met a tolerance within max_iterations
+  bool reduced = false;                  ///< from optimizeReduced(): the anchors' graph, frames in between placed
+  int num_poses_solved = 0;              ///< poses in the last solve: all frames, or the anchors if `reduced`
 };
 
 /// A growing pose graph. Online use: addOdometry() per frame, closeLoop() when the detector reports a loop (which
-/// re-optimises, warm-started from the current estimate). Batch use: optimize(graph, config). Not thread-safe.
+/// re-optimises the reduced graph, warm-started from the current estimate), and optimize() when the full
+/// solution is wanted (at the end of a run, or now and then): its result is the batch result. Batch use:
+/// optimize(graph, config). Not thread-safe.
 class PoseGraphOptimizer {
  public:
   /// Frame 0 at @p T_world_first. Throws sgtllc::Error if @p config is invalid.
@@ -66,10 +73,18 @@ class PoseGraphOptimizer {
   /// Records a loop (any kind of edge: it gets the robust loss and the outlier step) without optimising.
   /// Throws sgtllc::Error if a frame does not exist or from == to.
   void addLoop(const Edge& loop);
-  /// addLoop() then optimize(): what a running robot does when a loop arrives.
+  /// addLoop() then optimizeReduced(), or optimize() if config.online.reduced_graph is false: what a running
+  /// robot does when a loop arrives.
   const BackendResult& closeLoop(const Edge& loop);
-  /// Runs the outlier step and the optimisation over everything received, from the current estimate.
+  /// Runs the outlier step and the optimisation of the full graph over everything received, from the current
+  /// estimate (first from the reduced graph's solution if config.solver.reduced_warm_start).
   const BackendResult& optimize();
+  /// Runs the outlier step and the optimisation over everything received on the reduced graph: the anchors are
+  /// frame 0, the endpoints of every loop and the newest frame; the odometry between consecutive anchors is one
+  /// edge with the propagated covariance; each frame between two anchors is then placed by the least-squares
+  /// solution of its chain between them, to first order. O(frames) outside the solver, whose size is the
+  /// number of anchors.
+  const BackendResult& optimizeReduced();
 
   int numFrames() const { return static_cast<int>(poses_.size()); }
   int numLoops() const { return static_cast<int>(loops_.size()); }
@@ -79,9 +94,12 @@ class PoseGraphOptimizer {
   const BackendResult& result() const { return result_; }
 
  private:
+  const BackendResult& run(bool reduced);
+
   BackendConfig config_;
   std::vector<Eigen::Isometry3d> poses_;
   std::vector<Edge> odometry_;
+  std::vector<Matrix6d> odometry_covariance_;  ///< Ω⁻¹ of each odometry edge, for the reduced graph
   std::vector<Edge> loops_;
   OdometryChain chain_;
   ConsistencyGraph consistency_;
