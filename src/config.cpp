@@ -1,52 +1,12 @@
 #include "sgtllc/config.h"
 
-#include <charconv>
-#include <cmath>
 #include <string>
 
+#include "config_ranges.h"
+
 namespace sgtllc {
-namespace {
 
-/// Shortest text that reads back to @p v, in plain decimals unless that is long: "5", "0.0005", "1e-300", "nan".
-std::string text(double v) {
-  char buf[400];  // fixed notation of the largest double has 309 digits
-  auto res = std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::fixed);
-  if (res.ptr - buf > 24) res = std::to_chars(buf, buf + sizeof(buf), v);
-  return std::string(buf, res.ptr);
-}
-
-std::string text(long long v) { return std::to_string(v); }
-
-/// One bound of an interval: its value and whether it is included.
-struct Bound {
-  double value;
-  bool closed = true;
-};
-
-std::string interval(Bound lo, Bound hi) {
-  return (lo.closed ? "[" : "(") + text(lo.value) + ", " + text(hi.value) + (hi.closed ? "]" : ")");
-}
-
-bool inside(double v, Bound lo, Bound hi) {
-  return std::isfinite(v) && (lo.closed ? v >= lo.value : v > lo.value) && (hi.closed ? v <= hi.value : v < hi.value);
-}
-
-[[noreturn]] void outOfRange(const std::string& key, const std::string& value, const std::string& range) {
-  throw ConfigError(key, key + " = " + value + " is out of range " + range);
-}
-
-void checkReal(const std::string& key, double v, Bound lo, Bound hi) {
-  if (!inside(v, lo, hi)) outOfRange(key, text(v), interval(lo, hi));
-}
-
-void checkInt(const std::string& key, int v, long long lo, long long hi) {
-  if (v < lo || v > hi) outOfRange(key, text(static_cast<long long>(v)), "[" + text(lo) + ", " + text(hi) + "]");
-}
-
-// Counts of frames: far beyond any recorded sequence (KITTI 00 has 4,541 frames).
-constexpr long long kMaxFrames = 1000000;
-
-}  // namespace
+using namespace detail;
 
 void Config::validate() const {
   // Ranges are documented field by field in config.h; keep the two in step.
@@ -92,6 +52,7 @@ void Config::validate() const {
   checkReal("verification.ransac_confidence", v.ransac_confidence, {0.0, false}, {1.0});
   checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
   checkInt("threads", threads, 1, kMaxThreads);
+  validateBackendConfig(backend);
 }
 
 }  // namespace sgtllc

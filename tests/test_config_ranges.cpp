@@ -73,6 +73,25 @@ std::vector<Range> ranges() {
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
   r.push_back({"threads", {"1", "256"}, {"0", "257"}, "[1, 256]"});
+  const std::string b = "backend.";
+  r.push_back({b + "odometry.translation_sigma_per_m", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
+  r.push_back({b + "odometry.translation_sigma_min", {"1e-09", "100"}, {"0", "100.5"}, "(0, 100]"});
+  r.push_back({b + "odometry.rotation_sigma_per_m", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
+  r.push_back({b + "odometry.rotation_sigma_per_rad", {"0", "10"}, {"-1", "11"}, "[0, 10]"});
+  r.push_back({b + "odometry.rotation_sigma_min", {"1e-09", "10"}, {"0", "11"}, "(0, 10]"});
+  r.push_back({b + "loops.sigma_min", {"1e-09", "100"}, {"0", "-1", "101"}, "(0, 100]"});
+  r.push_back({b + "loops.information_scale", {"1e-09", "1"}, {"0", "1.5"}, "(0, 1]"});
+  r.push_back({b + "loss_scale", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
+  r.push_back({b + "consistency.translation_m", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
+  r.push_back({b + "consistency.translation_per_m", {"0", "1"}, {"-0.5", "2"}, "[0, 1]"});
+  r.push_back({b + "consistency.rotation_rad", {"0", "10"}, {"-0.1", "11"}, "[0, 10]"});
+  r.push_back({b + "consistency.rotation_per_m", {"0", "1"}, {"-0.5", "2"}, "[0, 1]"});
+  r.push_back({b + "max_loop_chi2", {"1e-09", "1000000000000"}, {"0", "2000000000000"}, "(0, 1000000000000]"});
+  r.push_back({b + "max_rejection_rounds", {"0", "100000"}, {"-1", "100001"}, "[0, 100000]"});
+  r.push_back({b + "solver.num_threads", {"1", "256"}, {"0", "257"}, "[1, 256]"});
+  r.push_back({b + "solver.max_iterations", {"1", "100000"}, {"0", "100001"}, "[1, 100000]"});
+  r.push_back({b + "solver.function_tolerance", {"1e-09", "1"}, {"0", "2"}, "(0, 1]"});
+  r.push_back({b + "solver.parameter_tolerance", {"1e-09", "1"}, {"0", "2"}, "(0, 1]"});
   r.push_back({"labels.custom_map", {"{0: -1, 65535: 6}"}, {"{65536: 0}", "{-1: 0}"}, "ids must be integers 0..65535",
                true});
   r.push_back({"labels.custom_map", {}, {"{50: 7}", "{50: -2}"}, "classes must be integers -1..6", true});
@@ -125,7 +144,7 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 7 * 3 + 22);
+  EXPECT_EQ(numeric, 7 * 3 + 22 + 18);  // 18 backend.* keys
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

@@ -5,6 +5,8 @@
 
 #include "commands.h"
 #include "common.h"
+#include "loop_closing.h"
+#include "trajectory_metrics.h"
 #include "sgtllc/eval/report.h"
 #include "sgtllc/io/config_yaml.h"
 
@@ -15,6 +17,8 @@ namespace {
 
 struct EvalCliOptions {
   std::string sequence, pairs, nodes, report, config;
+  std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
+  ClosingOutputs outputs;
   int threads = 0;
   bool json = false;
   bool force = false;
@@ -42,9 +46,47 @@ void checkReportFolder(const std::string& dir, bool force) {
 
 std::string summaryLine(const char* name, double value) { return std::string(name) + " " + fixed(value, 4); }
 
+const std::vector<std::string> kClosingReportFiles = {"trajectory_topview.png", "corrected_trajectory.txt"};
+
+/// The back end's part of `eval --odometry`: loop edges collected while the protocol runs, optimised at the end
+/// and compared with the sequence's ground truth.
+struct EvalClosing {
+  std::unique_ptr<Odometry> odometry;
+  std::vector<ClosingLoop> loops;
+  Closing closing;
+  std::vector<Eigen::Isometry3d> truth;
+  TrajectoryComparison comparison;
+  std::string summary;
+
+  void finish(const eval::SequenceRun& run, const eval::GroundTruth& truth_poses, const Config& config) {
+    closing = closeLoopsBatch(*odometry, loops, config.backend);
+    for (const eval::FrameRecord& f : run.frames) truth.emplace_back(truth_poses.pose(f.frame));
+    if (odometry->cam0) {
+      std::cerr << "warning: " << odometry->path << " is read in KITTI cam0 axes (no calib) but the ground truth is in "
+                << "the LiDAR frame; give --calib\n";
+    }
+    comparison = compareTrajectories(truth, *odometry, closing);
+    summary = closingSummary(loops, closing);
+  }
+  Json json() const { return {{"backend", closingJson(loops, closing)}, {"trajectory", comparisonJson(comparison)}}; }
+  std::string section() const {
+    return "## Loop closing\n\n```\n" + summary + "```\n\n" + comparisonMarkdown(comparison, "trajectory_topview.png");
+  }
+  void writeReportFiles(const std::string& dir) const {
+    io::writeTrajectory((fs::path(dir) / "corrected_trajectory.txt").string(),
+                        io::withPoses(odometry->trajectory, closing.poses));
+    plotClosing((fs::path(dir) / "trajectory_topview.png").string(), truth, *odometry, loops, closing);
+  }
+};
+
 void runEval(const EvalCliOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   checkReportFolder(o.report, o.force);
+  EvalClosing back;
+  if (!o.odometry.empty()) {
+    if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
+    checkClosingOutputs(o.outputs, o.force);
+  }
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   eval::EvalOptions options;
   options.threads = config.threads;
@@ -53,6 +95,16 @@ void runEval(const EvalCliOptions& o) {
     progress.update(done, std::to_string(loops) + " loops");
   };
   eval::ReportInfo info{o.nodes.empty() ? o.sequence : o.nodes, o.pairs, o.command, io::configToYaml(config), ""};
+  eval::ReportExtra extra;
+  if (!o.odometry.empty()) {
+    back.odometry =
+        std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
+    options.on_frame = [&](size_t i, const FrameResult& r, const LoopDetector& detector) {
+      if (const Candidate* c = r.loop()) {
+        back.loops.push_back(detectedLoop(i, *c, detector.database(), source, config.backend.loops));
+      }
+    };
+  }
 
   if (!o.pairs.empty()) {
     const auto pairs = eval::readPairList(o.pairs);
@@ -84,9 +136,20 @@ void runEval(const EvalCliOptions& o) {
     const eval::SequenceRun run = eval::runSequenceEvaluation(source, truth, config, options);
     progress.finish();
     const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
-    if (!o.report.empty()) eval::writeSequenceReport(o.report, run, m, options, info);
+    if (back.odometry) {
+      back.finish(run, truth, config);
+      writeClosingOutputs(o.outputs, *back.odometry, back.loops, back.closing, config.backend);
+      extra.section = back.section();
+      extra.metrics = back.json();
+    }
+    if (!o.report.empty()) {
+      eval::writeSequenceReport(o.report, run, m, options, info, extra);
+      if (back.odometry) back.writeReportFiles(o.report);
+    }
     if (o.json) {
-      std::cout << jsonText(eval::sequenceMetricsJson(m)) << "\n";
+      Json j = eval::sequenceMetricsJson(m);
+      for (const auto& [key, value] : extra.metrics.items()) j[key] = value;
+      std::cout << jsonText(j) << "\n";
       return;
     }
     const eval::CurveMetrics& main = m.pairwise.at(0);
@@ -103,6 +166,7 @@ void runEval(const EvalCliOptions& o) {
               << fixed(m.poses.rte_mean, 3) << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"
               << "ms per frame: median " << fixed(m.ms_per_frame_median, 2) << ", p99 " << fixed(m.ms_per_frame_p99, 2)
               << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n";
+    if (back.odometry) std::cout << back.summary << comparisonText(back.comparison);
   }
   if (!o.report.empty()) std::cout << "report: " << (fs::path(o.report) / "report.md").string() << "\n";
 }
@@ -122,8 +186,20 @@ void addEvalCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the metrics as one JSON object");
-  cmd->add_flag("--force", o->force, "overwrite an existing report in --report");
+  cmd->add_option("--odometry", o->odometry,
+                  "also close the loop: optimise this odometry (KITTI or TUM) with the detected loops and report "
+                  "ATE/RPE of odometry and corrected trajectory against poses.txt");
+  cmd->add_option("--calib", o->calib, "calib.txt for a KITTI --odometry (default: SEQ_DIR/calib.txt)");
+  addClosingOutputOptions(*cmd, o->outputs);
+  cmd->add_flag("--force", o->force, "overwrite an existing report in --report (and existing output files)");
   cmd->callback([o] {
+    if (o->odometry.empty() && (!o->calib.empty() || !o->outputs.trajectory.empty() || !o->outputs.graph.empty() ||
+                                !o->outputs.loops.empty())) {
+      throw CLI::ValidationError("eval", "--calib, --out-trajectory, --out-graph and --out-loops need --odometry");
+    }
+    if (!o->odometry.empty() && !o->pairs.empty()) {
+      throw CLI::ValidationError("eval", "--odometry needs the sequence protocol; drop --pairs");
+    }
     o->command = commandLine();
     runEval(*o);
   });

@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "loop_closing.h"
 #include "sgtllc/eval/frame_source.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
@@ -16,9 +17,12 @@ struct RunOptions {
   std::string nodes;
   std::string out;
   std::string config;
+  std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
+  ClosingOutputs outputs;
   int threads = 0;
   bool json = false;
   bool force = false;
+  bool online = false;  ///< re-optimise at every loop instead of once at the end
 };
 
 using Loop = io::LoopRecord;
@@ -43,13 +47,21 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   if (!o.out.empty()) checkWritable(o.out, o.force);
+  checkClosingOutputs(o.outputs, o.force);
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  std::unique_ptr<Odometry> odometry;
+  if (!o.odometry.empty()) {
+    odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
+  }
+  std::unique_ptr<OnlineClosing> online;
+  if (odometry && o.online) online = std::make_unique<OnlineClosing>(*odometry, config.backend);
   LoopDetector detector(config);
   if (source.size() <= static_cast<size_t>(detector.firstSearchedFrame())) {
     noteShortSequence(o.nodes.empty() ? o.sequence : o.nodes, source.size(), config);
   }
 
   std::vector<Loop> loops;
+  std::vector<ClosingLoop> edges;
   std::vector<double> frame_ms, load_ms;
   Progress progress("frames", source.size());
   eval::streamSequence(source, detector, config.threads,
@@ -63,12 +75,9 @@ void runSequence(const RunOptions& o) {
       warnAboutInput(source.name(index), stats, r.num_nodes);
     }
     if (const Candidate* c = r.loop()) {
-      Loop& l = loops.emplace_back();
-      l.query = source.name(index);
-      l.match = source.name(static_cast<size_t>(c->frame));
-      l.score = c->match.score_t;
-      l.score_c = c->match.score_c;
-      l.T_match_query = c->match.T_match_query;
+      const ClosingLoop& edge =
+          edges.emplace_back(detectedLoop(index, *c, detector.database(), source, config.backend.loops));
+      Loop& l = loops.emplace_back(loopRecord(edge, c->match.score_t, c->match.score_c));
       if (!o.json) {
         progress.clear();
         const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();
@@ -77,11 +86,22 @@ void runSequence(const RunOptions& o) {
                   << fixed(t.z(), 2) << ") m\n"
                   << std::flush;
       }
+      if (online) {
+        const auto start = std::chrono::steady_clock::now();
+        const backend::BackendResult& update = online->closeLoop(static_cast<int>(index), edge);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (!o.json) std::cout << onlineUpdateLine(update, ms) << std::flush;
+      }
     }
     progress.update(index + 1, std::to_string(loops.size()) + " loops");
   });
   progress.finish();
-  if (!o.out.empty()) writeFileAtomically(o.out, io::loopsCsvText(loops));
+  std::unique_ptr<Closing> closing;
+  if (odometry) {
+    closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
+    writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend);
+  }
+  if (!o.out.empty()) writeFileAtomically(o.out, io::loopsCsvText(loops, true));
 
   const int n = detector.numFrames();
   const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;
@@ -94,21 +114,25 @@ void runSequence(const RunOptions& o) {
                       {"score_c", l.score_c},
                       {"T_match_query", matrixJson(l.T_match_query)}});
     }
-    const Json out = {{"sequence", o.nodes.empty() ? o.sequence : o.nodes},
-                                {"frames", n},
-                                {"loops", loops.size()},
-                                {"ms_per_frame_median", eval::percentile(frame_ms, 0.5)},
-                                {"ms_per_frame_p99", eval::percentile(frame_ms, 0.99)},
-                                {"load_ms_median", eval::percentile(load_ms, 0.5)},
-                                {"db_bytes_per_frame", bytes_per_frame},
-                                {"loop_list", list}};
+    Json out = {{"sequence", o.nodes.empty() ? o.sequence : o.nodes},
+                {"frames", n},
+                {"loops", loops.size()},
+                {"ms_per_frame_median", eval::percentile(frame_ms, 0.5)},
+                {"ms_per_frame_p99", eval::percentile(frame_ms, 0.99)},
+                {"load_ms_median", eval::percentile(load_ms, 0.5)},
+                {"db_bytes_per_frame", bytes_per_frame},
+                {"loop_list", list}};
+    if (closing) out["backend"] = closingJson(edges, *closing);
     std::cout << jsonText(out) << "\n";
   } else {
     std::cout << "frames " << n << ", loops " << loops.size() << ", ms per frame: median "
               << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
               << " (load not included: median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
               << fixed(bytes_per_frame, 0) << " bytes per frame\n";
-    if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";
+    if (closing) std::cout << closingSummary(edges, *closing);
+    for (const std::string* path : {&o.out, &o.outputs.trajectory, &o.outputs.graph, &o.outputs.loops}) {
+      if (!path->empty()) std::cout << "wrote " << *path << "\n";
+    }
   }
 }
 
@@ -120,15 +144,28 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin and labels/NNNNNN.label");
   cmd->add_option("--nodes", o->nodes,
                   "instead of SEQ_DIR: a folder of node files NAME.txt (x y z label rows), frames in name order");
-  cmd->add_option("--out", o->out, "write the detected loops as CSV (query,match,score,score_c, 3x4 pose)");
+  cmd->add_option("--out", o->out,
+                  "write the detected loops as CSV (query,match,score,score_c, 3x4 pose, 21 information entries)");
+  cmd->add_option("--odometry", o->odometry,
+                  "close the loop: optimise this odometry (KITTI or TUM, one pose per frame) with the loops");
+  cmd->add_option("--calib", o->calib,
+                  "KITTI calib.txt for a KITTI --odometry in cam0 (default: SEQ_DIR/calib.txt if it exists)");
+  addClosingOutputOptions(*cmd, o->outputs);
+  cmd->add_flag("--online", o->online,
+                "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and the loops as one JSON object");
-  cmd->add_flag("--force", o->force, "overwrite an existing --out file");
+  cmd->add_flag("--force", o->force, "overwrite existing output files");
   cmd->callback([o] {
     if (o->sequence.empty() == o->nodes.empty()) {
       throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
+    }
+    const bool closes = !o->outputs.trajectory.empty() || !o->outputs.graph.empty() || !o->outputs.loops.empty() ||
+                        !o->calib.empty() || o->online;
+    if (closes && o->odometry.empty()) {
+      throw CLI::ValidationError("run", "--out-trajectory, --out-graph, --out-loops, --calib and --online need --odometry");
     }
     runSequence(*o);
   });

@@ -9,6 +9,7 @@ void addPairCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addConfigCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);
+void addOptimizeCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 
 }  // namespace sgtllc::cli

@@ -24,7 +24,10 @@ std::string& commandLine() {
 
 Config loadConfigOption(const std::string& path, int threads) {
   Config config = path.empty() ? Config{} : io::loadConfig(path);
-  if (threads > 0) config.threads = threads;
+  if (threads > 0) {
+    config.threads = threads;
+    config.backend.solver.num_threads = threads;
+  }
   config.validate();
   return config;
 }
@@ -89,6 +92,12 @@ void checkWritable(const std::string& path, bool force) {
   if (::access(parent.c_str(), W_OK) != 0) {
     throw Error("cannot write " + path + ": folder " + parent.string() + " is not writable");
   }
+}
+
+void checkReportFiles(const std::string& dir, const std::vector<std::string>& files, bool force) {
+  if (!fs::exists(dir)) return;
+  if (!fs::is_directory(dir)) throw Error(dir + ": exists and is not a folder");
+  for (const std::string& f : files) checkWritable((fs::path(dir) / f).string(), force);
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -25,7 +26,8 @@ inline constexpr int kExitUsage = 2;
 /// The command line this process was started with (set by main), for reports.
 std::string& commandLine();
 
-/// Configuration from --config (or the defaults), with --threads applied if given (> 0).
+/// Configuration from --config (or the defaults), with --threads applied if given (> 0) to the detector's
+/// `threads` and the back end's `backend.solver.num_threads`.
 Config loadConfigOption(const std::string& path, int threads);
 
 /// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels.
@@ -48,6 +50,10 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
 
 /// Refuses to overwrite an existing file unless @p force: nothing a user gave us is overwritten by accident.
 void checkWritable(const std::string& path, bool force);
+
+/// A report folder may be written if it does not exist yet, or (unless @p force) holds none of @p files.
+/// Throws sgtllc::Error naming the first file that exists, or the folder if it is not one.
+void checkReportFiles(const std::string& dir, const std::vector<std::string>& files, bool force);
 
 /// Writes @p text to @p path via a temporary file and a rename, so a failure never leaves half a file.
 void writeFileAtomically(const std::string& path, const std::string& text);

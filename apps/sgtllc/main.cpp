@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "sgtllc 0.1.0");
   sgtllc::cli::addPairCommand(app);
   sgtllc::cli::addRunCommand(app);
+  sgtllc::cli::addOptimizeCommand(app);
   sgtllc::cli::addEvalCommand(app);
   sgtllc::cli::addSimulateCommand(app);
   sgtllc::cli::addConfigCommand(app);

@@ -16,6 +16,7 @@
 #include <string>
 #include <utility>
 
+#include "sgtllc/backend/backend_config.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc {
@@ -196,11 +197,18 @@ struct Config {
   AssociationConfig association;
   VerificationConfig verification;
   int threads = 1;  ///< worker threads for candidate verification; results do not depend on it [1, kMaxThreads]
+  /// Pose-graph back end (`sgtllc run --odometry`, `sgtllc optimize`): plain data here, the optimiser is the
+  /// separate sgtllc_backend library. Ranges: validateBackendConfig (config_backend.cpp) and docs/backend.md.
+  backend::BackendConfig backend;
 
   /// Throws ConfigError for the first field whose value is out of range, e.g.
   /// "verification.sigma_4 = 5 is out of range [0, 1]".
   void validate() const;
 };
+
+/// Range checks of the back-end settings as ConfigError (`backend.loss_scale = 0 is out of range (0, 1000]`); a
+/// configuration that passes also passes backend::BackendConfig::validate().
+void validateBackendConfig(const backend::BackendConfig& backend);
 
 /// A configuration value out of its allowed range. key() is the YAML key (`verification.sigma_4`), so a reader
 /// of a configuration file can point at the offending line.

@@ -63,9 +63,11 @@ std::string configSection(const ReportInfo& info) {
 }  // namespace
 
 void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
-                         const EvalOptions& options, const ReportInfo& info) {
+                         const EvalOptions& options, const ReportInfo& info, const ReportExtra& extra) {
   const fs::path out = prepare(dir);
-  writeText(out / "metrics.json", sequenceMetricsJson(m).dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+  Json metrics = sequenceMetricsJson(m);
+  for (const auto& [key, value] : extra.metrics.items()) metrics[key] = value;
+  writeText(out / "metrics.json", metrics.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
   std::vector<std::pair<std::string, const CurveMetrics*>> curves;
   for (const CurveMetrics& c : m.pairwise) curves.emplace_back("pairwise", &c);
   curves.emplace_back("top1", &m.top1);
@@ -126,6 +128,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   if (!run.contiguous) {
     md << "Note: frame numbers are not 0, 1, 2, …; the exclusion gap counted processed frames, not frame numbers.\n\n";
   }
+  md << extra.section;
   md << "## Distance test\n\n| positive < | F1max | EP | positives |\n|---|---|---|---|\n";
   for (const CurveMetrics& c : m.pairwise) {
     md << "| " << fixed(c.positive_distance, 0) << " m | " << fixed(c.f1_max, 4) << " | " << fixed(c.ep, 4) << " | "

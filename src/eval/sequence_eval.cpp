@@ -50,6 +50,7 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
       rec.pose_evaluated = truth.distance(rec.frame, m) <= options.pose_max_distance;
     }
     run.frames.push_back(std::move(rec));
+    if (options.on_frame) options.on_frame(i, r, detector);
     if (options.progress) options.progress(i + 1, source.size(), loops);
   });
   return run;

@@ -13,6 +13,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config_yaml_backend.h"
 #include "file_util.h"
 
 namespace sgtllc::io {
@@ -268,6 +269,9 @@ const std::vector<Field>& fields() {
                                   [](Config& c) -> uint32_t& { return c.verification.seed; }));
     f.push_back(integer<int>("threads", "worker threads for candidate verification; results do not depend on it",
                         [](Config& c) -> int& { return c.threads; }));
+    detail::addBackendFields({[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
+                              [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
+                              [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); }});
     return f;
   }();
   return all;

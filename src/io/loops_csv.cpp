@@ -16,6 +16,7 @@ namespace sgtllc::io {
 namespace {
 
 constexpr size_t kColumns = 16;
+constexpr size_t kInformationColumns = 21;
 constexpr size_t kFirstMatrixColumn = 4;
 constexpr double kOrthonormalTolerance = 1e-3;  // six decimals leave |RᵀR − I| ~ 1e-6
 
@@ -37,10 +38,35 @@ std::vector<std::string_view> splitCommas(std::string_view line) {
   }
 }
 
-std::string headerLine() {
+std::string headerLine(bool with_information = false) {
   std::string h;
   for (const std::string& c : loopsCsvColumns()) h += (h.empty() ? "" : ",") + c;
+  if (with_information) {
+    for (const std::string& c : loopsCsvInformationColumns()) h += "," + c;
+  }
   return h;
+}
+
+/// The information fields of a row (21 strings): empty, or the symmetric matrix they list. Throws naming @p at.
+std::optional<backend::Matrix6d> parseInformation(const std::vector<std::string_view>& f, const std::string& at) {
+  const std::vector<std::string>& names = loopsCsvInformationColumns();
+  size_t empty = 0;
+  for (size_t k = kColumns; k < f.size(); ++k) empty += f[k].empty();
+  if (empty == kInformationColumns) return std::nullopt;
+  backend::Matrix6d information;
+  size_t k = kColumns;
+  for (int r = 0; r < 6; ++r) {
+    for (int c = r; c < 6; ++c, ++k) {
+      double v = 0.0;
+      if (!detail::parseReal(f[k], v) || !std::isfinite(v)) {
+        throw Error(at + ": column " + names[k - kColumns] + ": '" + std::string(f[k]) +
+                    "' is not a finite number (give all 21 information entries or none)");
+      }
+      if (r == c && v < 0.0) throw Error(at + ": column " + names[k - kColumns] + ": negative information diagonal");
+      information(r, c) = information(c, r) = v;
+    }
+  }
+  return information;
 }
 
 }  // namespace
@@ -52,8 +78,19 @@ const std::vector<std::string>& loopsCsvColumns() {
   return columns;
 }
 
-std::string loopsCsvText(const std::vector<LoopRecord>& loops) {
-  std::string out = headerLine() + "\n";
+const std::vector<std::string>& loopsCsvInformationColumns() {
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> c;
+    for (int r = 1; r <= 6; ++r) {
+      for (int k = r; k <= 6; ++k) c.push_back("i" + std::to_string(r) + std::to_string(k));
+    }
+    return c;
+  }();
+  return columns;
+}
+
+std::string loopsCsvText(const std::vector<LoopRecord>& loops, bool with_information) {
+  std::string out = headerLine(with_information) + "\n";
   for (const LoopRecord& l : loops) {
     out += l.query + "," + l.match + ",";
     appendFixed6(out, l.score);
@@ -62,6 +99,14 @@ std::string loopsCsvText(const std::vector<LoopRecord>& loops) {
     for (int k = 0; k < 12; ++k) {
       out += ',';
       appendFixed6(out, l.T_match_query(k / 4, k % 4));
+    }
+    if (with_information) {
+      for (int r = 0; r < 6; ++r) {
+        for (int c = r; c < 6; ++c) {
+          out += ',';
+          if (l.information) detail::appendShortest(out, (*l.information)(r, c));
+        }
+      }
     }
     out += '\n';
   }
@@ -76,24 +121,27 @@ std::vector<LoopRecord> readLoopsCsv(const std::string& path, const std::vector<
 
   std::vector<LoopRecord> loops;
   size_t pos = 0, line_no = 0;
-  bool header_seen = false;
+  bool header_seen = false, with_information = false;
   while (pos < text.size()) {
     ++line_no;
     std::string_view line = detail::nextLine(text, pos);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     const std::string at = path + ":" + std::to_string(line_no);
     if (!header_seen) {
-      if (line != headerLine()) {
-        throw Error(at + ": header '" + std::string(line) + "' is not the loops CSV header '" + headerLine() + "'");
+      with_information = line == headerLine(true);
+      if (line != headerLine() && !with_information) {
+        throw Error(at + ": header '" + std::string(line) + "' is not the loops CSV header '" + headerLine() +
+                    "' (optionally followed by the information columns i11,…,i66)");
       }
       header_seen = true;
       continue;
     }
     if (line.empty()) continue;
     const std::vector<std::string_view> f = splitCommas(line);
-    if (f.size() != kColumns) {
-      throw Error(at + ": " + std::to_string(f.size()) + " columns, expected " + std::to_string(kColumns) +
-                  " (" + headerLine() + ")");
+    const size_t expected = with_information ? kColumns + kInformationColumns : kColumns;
+    if (f.size() != expected) {
+      throw Error(at + ": " + std::to_string(f.size()) + " columns, expected " + std::to_string(expected) +
+                  " (" + (with_information ? "the header's" : headerLine()) + ")");
     }
     LoopRecord l;
     l.query = std::string(f[0]);
@@ -123,6 +171,7 @@ std::vector<LoopRecord> readLoopsCsv(const std::string& path, const std::vector<
       throw Error(at + ": r11..r33 is not a rotation (|RᵀR − I| = " + std::to_string(err) + ", det " +
                   std::to_string(R.determinant()) + ")");
     }
+    if (with_information) l.information = parseInformation(f, at);
     loops.push_back(l);
   }
   if (!header_seen) throw Error(path + ": empty file (expected the loops CSV header '" + headerLine() + "')");
@@ -144,7 +193,7 @@ std::vector<backend::Edge> loopEdges(const std::vector<LoopRecord>& loops, const
                                                 Eigen::ComputeFullU | Eigen::ComputeFullV);
     e.T_from_to.linear() = svd.matrixU() * svd.matrixV().transpose();
     e.T_from_to.translation() = l.T_match_query.topRightCorner<3, 1>();
-    e.information = information;
+    e.information = l.information.value_or(information);
     e.kind = backend::EdgeKind::kLoop;
     edges.push_back(e);
   }

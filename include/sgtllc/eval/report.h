@@ -23,6 +23,12 @@ struct ReportInfo {
   std::string data_note;      ///< e.g. which data this is (real KITTI, simulated, ...)
 };
 
+/// What a caller adds to a sequence report, e.g. the trajectory errors of `sgtllc eval --odometry`.
+struct ReportExtra {
+  std::string section;                ///< markdown placed after the summary
+  Json metrics = Json::object();      ///< keys added to metrics.json
+};
+
 /// Sequence metrics with the keys `f1_max`, `ep`, `recall_at_100_precision`, `retrieval_recall_at_15`,
 /// `rte_mean`, `rre_mean`, `success_rate`, `n_queries`, `n_positive`, `ms_per_frame_median`, `ms_per_frame_p99`,
 /// `db_bytes_per_frame`, and the top-1 protocol, distance test and loop counts.
@@ -34,7 +40,7 @@ Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_
 /// Writes report.md, metrics.json, pr_curve.csv, frames.csv, candidates.csv and pr_curves.png, timing.png,
 /// memory.png, trajectory.png into @p dir (created if needed). Throws sgtllc::Error naming a file that cannot be written.
 void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
-                         const EvalOptions& options, const ReportInfo& info);
+                         const EvalOptions& options, const ReportInfo& info, const ReportExtra& extra = {});
 /// Writes report.md, metrics.json, pr_curve.csv, pairs.csv and pr_curves.png into @p dir.
 void writePairListReport(const std::string& dir, const PairListRun& run, const PairListMetrics& m,
                          const ReportInfo& info);

@@ -26,6 +26,9 @@ struct EvalOptions {
   int threads = 1;                     ///< reading and clustering threads (results do not depend on it)
   /// Called after every frame with (frames done, total, loops so far).
   std::function<void(size_t, size_t, int)> progress;
+  /// Called after every frame with its index, the detector's result and the detector (its database holds the
+  /// frame's nodes), e.g. to build loop edges for a pose graph.
+  std::function<void(size_t, const FrameResult&, const LoopDetector&)> on_frame;
 };
 
 /// One retrieved candidate of a query, with its ground truth.

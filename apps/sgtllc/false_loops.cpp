@@ -1,0 +1,45 @@
+#include "false_loops.h"
+
+#include <cmath>
+
+#include "sgtllc/sim/rng.h"
+
+namespace sgtllc::cli {
+
+std::vector<ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odometry,
+                                    const std::vector<ClosingLoop>& real, double fraction, uint64_t seed,
+                                    const std::vector<std::string>& frame_names, const backend::LoopNoise& noise,
+                                    double min_distance) {
+  std::vector<ClosingLoop> out;
+  if (!(fraction > 0.0)) return out;
+  const int count = std::max(1, static_cast<int>(std::lround(fraction * static_cast<double>(real.size()))));
+  const int n = static_cast<int>(odometry.size());
+  // The Rng's own distributions (not <random>'s), so a seed gives the same loops with any standard library.
+  sim::Rng rng(seed);
+  constexpr int kAttemptsPerLoop = 10000;
+  for (int attempt = 0; static_cast<int>(out.size()) < count; ++attempt) {
+    if (attempt >= kAttemptsPerLoop * count || n < 2) {
+      throw Error("--add-false-loops: found no frame pair more than " + fixed(min_distance, 0) +
+                  " m apart by the odometry in " + std::to_string(attempt) + " random draws");
+    }
+    int a = rng.uniformInt(0, n - 1), b = rng.uniformInt(0, n - 1);
+    if (a > b) std::swap(a, b);
+    if ((odometry[a].translation() - odometry[b].translation()).norm() <= min_distance) continue;
+    ClosingLoop l;
+    l.edge.from = a;
+    l.edge.to = b;
+    l.edge.kind = backend::EdgeKind::kLoop;
+    l.edge.T_from_to = Eigen::Translation3d(rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0), rng.uniform(-1.0, 1.0)) *
+                       Eigen::AngleAxisd(rng.uniform(-M_PI, M_PI), Eigen::Vector3d::UnitZ());
+    l.edge.information = real.empty() ? nominalLoopInformation(noise)
+                                      : real[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(real.size()) - 1))]
+                                            .edge.information;
+    l.query = frame_names.at(static_cast<size_t>(b));
+    l.match = frame_names.at(static_cast<size_t>(a));
+    l.injected = true;
+    out.push_back(l);
+  }
+  return out;
+}
+
+}  // namespace sgtllc::cli

@@ -1,0 +1,254 @@
+#include "loop_closing.h"
+
+#include <filesystem>
+
+#include "sgtllc/backend/information.h"
+#include "sgtllc/io/g2o.h"
+
+namespace fs = std::filesystem;
+
+namespace sgtllc::cli {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<backend::Edge> acceptedLoopEdges(const std::vector<ClosingLoop>& loops, const backend::BackendResult& r) {
+  std::vector<backend::Edge> edges;
+  for (size_t k = 0; k < loops.size() && k < r.loops.size(); ++k) {
+    if (r.loops[k].decision == backend::LoopDecision::kAccepted) edges.push_back(loops[k].edge);
+  }
+  return edges;
+}
+
+}  // namespace
+
+Odometry readOdometry(const std::string& path, const std::string& calib, size_t frames) {
+  Odometry o;
+  o.path = path;
+  o.trajectory = io::readTrajectory(path, calib);
+  if (frames > 0) io::checkPoseCount(path, o.trajectory, frames);
+  o.cam0 = o.trajectory.format == io::TrajectoryFormat::kKitti && !o.trajectory.calib_Tr;
+  o.poses = o.trajectory.poses;
+  for (Eigen::Isometry3d& T : o.poses) {
+    T.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
+  }
+  return o;
+}
+
+std::string sequenceCalib(const std::string& calib, const std::string& sequence) {
+  if (!calib.empty() || sequence.empty()) return calib;
+  const fs::path candidate = fs::path(sequence) / "calib.txt";
+  return fs::exists(candidate) ? candidate.string() : std::string();
+}
+
+backend::Matrix6d nominalLoopInformation(const backend::LoopNoise& noise) {
+  // Eight centres on the corners of a 20 m cube around the sensor, fitted exactly: the rotation and translation
+  // information of a typical urban loop (20–40 objects within ±25 m, about ten of them inliers).
+  std::vector<Eigen::Vector3d> centres;
+  for (int k = 0; k < 8; ++k) centres.emplace_back(k & 1 ? 10.0 : -10.0, k & 2 ? 10.0 : -10.0, k & 4 ? 10.0 : -10.0);
+  return backend::loopInformation(centres, centres, Eigen::Isometry3d::Identity(), noise);
+}
+
+ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& db, const eval::FrameSource& source,
+                         const backend::LoopNoise& noise) {
+  ClosingLoop loop;
+  loop.query = source.name(query);
+  loop.match = source.name(static_cast<size_t>(c.frame));
+  const int q = static_cast<int>(query);
+  try {
+    loop.edge = backend::loopEdge(c.frame, q, c.match, db.nodes(q), db.nodes(c.frame), noise);
+  } catch (const Error&) {
+    // Collinear inlier centres leave a rotation unobservable: fall back to the nominal information.
+    loop.edge.from = c.frame;
+    loop.edge.to = q;
+    loop.edge.T_from_to = Eigen::Isometry3d(c.match.T_match_query);
+    loop.edge.information = nominalLoopInformation(noise);
+    loop.edge.kind = backend::EdgeKind::kLoop;
+    loop.has_information = false;
+  }
+  return loop;
+}
+
+io::LoopRecord loopRecord(const ClosingLoop& loop, double score, double score_c) {
+  io::LoopRecord r;
+  r.query = loop.query;
+  r.match = loop.match;
+  r.query_index = loop.edge.to;
+  r.match_index = loop.edge.from;
+  r.score = score;
+  r.score_c = score_c;
+  r.T_match_query = loop.edge.T_from_to.matrix();
+  if (loop.has_information) r.information = loop.edge.information;
+  return r;
+}
+
+std::vector<ClosingLoop> csvLoops(const std::vector<io::LoopRecord>& records, const backend::LoopNoise& noise) {
+  const std::vector<backend::Edge> edges = io::loopEdges(records, nominalLoopInformation(noise));
+  std::vector<ClosingLoop> loops;
+  for (size_t k = 0; k < records.size(); ++k) {
+    loops.push_back({edges[k], records[k].query, records[k].match, records[k].information.has_value(), false});
+  }
+  return loops;
+}
+
+void addClosingOutputOptions(CLI::App& cmd, ClosingOutputs& o) {
+  cmd.add_option("--out-trajectory", o.trajectory,
+                 "write the corrected trajectory (same format and frame as --odometry)");
+  cmd.add_option("--out-graph", o.graph, "write the pose graph as g2o: corrected poses, odometry and accepted loops");
+  cmd.add_option("--out-loops", o.loops,
+                 "write every loop as a g2o EDGE_SE3:QUAT line; rejected ones follow a '# rejected' comment");
+}
+
+void checkClosingOutputs(const ClosingOutputs& o, bool force) {
+  for (const std::string* path : {&o.trajectory, &o.graph, &o.loops}) {
+    if (!path->empty()) checkWritable(*path, force);
+  }
+}
+
+Closing closeLoopsBatch(const Odometry& odometry, const std::vector<ClosingLoop>& loops,
+                        const backend::BackendConfig& config) {
+  backend::PoseGraph graph = backend::odometryGraph(odometry.poses, config.odometry);
+  for (const ClosingLoop& l : loops) graph.edges.push_back(l.edge);
+  const auto start = std::chrono::steady_clock::now();
+  Closing c;
+  c.result = backend::optimize(graph, config);
+  c.ms = msSince(start);
+  c.poses = c.result.poses;
+  return c;
+}
+
+OnlineClosing::OnlineClosing(const Odometry& odometry, const backend::BackendConfig& config)
+    : odometry_(odometry), optimizer_(config, odometry.poses.at(0)) {}
+
+void OnlineClosing::addFramesUpTo(int frame) {
+  for (int i = optimizer_.numFrames(); i <= frame; ++i) {
+    optimizer_.addOdometry(odometry_.poses[i - 1].inverse() * odometry_.poses[i]);
+  }
+}
+
+const backend::BackendResult& OnlineClosing::closeLoop(int frame, const ClosingLoop& loop) {
+  addFramesUpTo(frame);
+  const auto start = std::chrono::steady_clock::now();
+  const backend::BackendResult& r = optimizer_.closeLoop(loop.edge);
+  ms_ += msSince(start);
+  return r;
+}
+
+Closing OnlineClosing::finish() {
+  addFramesUpTo(static_cast<int>(odometry_.poses.size()) - 1);
+  Closing c;
+  // Frames after the last loop only have odometry edges: their optimum is the dead-reckoned estimate.
+  c.result = optimizer_.result();
+  c.poses = optimizer_.poses();
+  c.result.poses = c.poses;
+  c.ms = ms_;
+  return c;
+}
+
+std::string onlineUpdateLine(const backend::BackendResult& r, double ms) {
+  const backend::LoopReport& last = r.loops.back();
+  return std::string("  back end: ") + backend::loopDecisionName(last.decision) + " (consistent with " +
+         std::to_string(last.consistent_with) + " other loops, chi2 " + fixed(last.chi2, 2) + "); " +
+         std::to_string(r.num_accepted) + " accepted, " + std::to_string(r.num_rejected) + " rejected so far; " +
+         std::to_string(r.iterations) + " iterations, " + fixed(ms, 1) + " ms\n";
+}
+
+void writeClosingOutputs(const ClosingOutputs& o, const Odometry& odometry, const std::vector<ClosingLoop>& loops,
+                         const Closing& closing, const backend::BackendConfig& config) {
+  if (!o.trajectory.empty()) io::writeTrajectory(o.trajectory, io::withPoses(odometry.trajectory, closing.poses));
+  if (!o.graph.empty()) {
+    backend::PoseGraph graph;
+    graph.poses = closing.poses;
+    graph.edges = backend::odometryEdges(odometry.poses, config.odometry);
+    for (const backend::Edge& e : acceptedLoopEdges(loops, closing.result)) graph.edges.push_back(e);
+    io::writeG2o(o.graph, graph);
+  }
+  if (!o.loops.empty()) {
+    std::string text = "# sgtllc loops: EDGE_SE3:QUAT match query T_match_query information (g2o convention)\n";
+    for (size_t k = 0; k < loops.size(); ++k) {
+      const backend::LoopReport& r = closing.result.loops.at(k);
+      if (r.decision != backend::LoopDecision::kAccepted || loops[k].injected) {
+        text += std::string("# ") + (loops[k].injected ? "injected false loop, " : "") +
+                (r.decision == backend::LoopDecision::kAccepted ? "accepted" : "rejected") + " (" +
+                backend::loopDecisionName(r.decision) + "): " + loops[k].query + " -> " + loops[k].match + "\n";
+      }
+      text += io::g2oEdgesText({loops[k].edge});
+    }
+    writeFileAtomically(o.loops, text);
+  }
+}
+
+namespace {
+
+struct Counts {
+  int loops = 0, accepted = 0, inconsistent = 0, large_residual = 0, nominal = 0;
+  int injected = 0, injected_rejected = 0;
+};
+
+Counts countLoops(const std::vector<ClosingLoop>& loops, const backend::BackendResult& r) {
+  Counts c;
+  for (size_t k = 0; k < loops.size(); ++k) {
+    const backend::LoopDecision d = r.loops.at(k).decision;
+    ++c.loops;
+    c.accepted += d == backend::LoopDecision::kAccepted;
+    c.inconsistent += d == backend::LoopDecision::kInconsistent;
+    c.large_residual += d == backend::LoopDecision::kLargeResidual;
+    c.nominal += !loops[k].has_information;
+    c.injected += loops[k].injected;
+    c.injected_rejected += loops[k].injected && d != backend::LoopDecision::kAccepted;
+  }
+  return c;
+}
+
+}  // namespace
+
+Json closingJson(const std::vector<ClosingLoop>& loops, const Closing& closing) {
+  const Counts c = countLoops(loops, closing.result);
+  Json list = Json::array();
+  for (size_t k = 0; k < loops.size(); ++k) {
+    const backend::LoopReport& r = closing.result.loops[k];
+    list.push_back({{"query", loops[k].query},
+                    {"match", loops[k].match},
+                    {"decision", backend::loopDecisionName(r.decision)},
+                    {"consistent_with", r.consistent_with},
+                    {"chi2", r.chi2},
+                    {"injected", loops[k].injected}});
+  }
+  return {{"loops", c.loops},
+          {"accepted", c.accepted},
+          {"rejected", c.loops - c.accepted},
+          {"rejected_inconsistent", c.inconsistent},
+          {"rejected_large_residual", c.large_residual},
+          {"nominal_information", c.nominal},
+          {"injected_false_loops", c.injected},
+          {"injected_rejected", c.injected_rejected},
+          {"solves", closing.result.solves},
+          {"iterations", closing.result.iterations},
+          {"converged", closing.result.converged},
+          {"final_cost", closing.result.final_cost},
+          {"optimisation_ms", closing.ms},
+          {"loop_list", list}};
+}
+
+std::string closingSummary(const std::vector<ClosingLoop>& loops, const Closing& closing) {
+  const Counts c = countLoops(loops, closing.result);
+  std::string s = "back end: " + std::to_string(c.loops) + " loops, " + std::to_string(c.accepted) + " accepted, " +
+                  std::to_string(c.loops - c.accepted) + " rejected (" + std::to_string(c.inconsistent) +
+                  " inconsistent, " + std::to_string(c.large_residual) + " large residual); " +
+                  std::to_string(closing.result.solves) + " solves, " + std::to_string(closing.result.iterations) +
+                  " iterations" + (closing.result.converged ? "" : " (not converged)") + ", " +
+                  fixed(closing.ms, 1) + " ms\n";
+  if (c.nominal > 0) {
+    s += "  " + std::to_string(c.nominal) + " loops without their own information use the nominal model\n";
+  }
+  if (c.injected > 0) {
+    s += "  injected false loops: " + std::to_string(c.injected) + ", rejected " +
+         std::to_string(c.injected_rejected) + ", accepted " + std::to_string(c.injected - c.injected_rejected) +
+         "\n";
+  }
+  return s;
+}
+
+}  // namespace sgtllc::cli

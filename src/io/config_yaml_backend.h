@@ -1,0 +1,26 @@
+// The `backend.*` keys of the configuration YAML (config_yaml.cpp), kept apart so the back end's settings live in
+// one place. config_yaml.cpp owns the field machinery and passes it in as the three makers below.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sgtllc/config.h"
+
+namespace sgtllc::io::detail {
+
+/// How config_yaml.cpp adds one field of each kind (key, comment, reference to the value).
+struct BackendFieldMakers {
+  std::function<void(std::string, std::string, std::function<double&(Config&)>)> number;
+  std::function<void(std::string, std::string, std::function<int&(Config&)>)> integer;
+  std::function<void(std::string, std::string, std::function<backend::RobustLoss&(Config&)>,
+                     std::vector<std::pair<std::string, backend::RobustLoss>>)>
+      loss;
+};
+
+/// Adds every field of backend::BackendConfig, in struct order, with keys mirroring the struct.
+void addBackendFields(const BackendFieldMakers& add);
+
+}  // namespace sgtllc::io::detail
