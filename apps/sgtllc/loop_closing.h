@@ -73,6 +73,7 @@ struct Closing {
   backend::BackendResult result;         ///< per-loop decisions (loops in the order given), solver statistics
   std::vector<Eigen::Isometry3d> poses;  ///< corrected trajectory, T_world_frame
   double ms = 0.0;                       ///< optimisation time (all solves)
+  double final_ms = 0.0;                 ///< online: the full solve after the last frame (included in ms)
 };
 
 /// Odometry edges + all loops, optimised once (batch).

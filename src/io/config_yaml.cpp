@@ -271,7 +271,8 @@ const std::vector<Field>& fields() {
                         [](Config& c) -> int& { return c.threads; }));
     detail::addBackendFields({[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
                               [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
-                              [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); }});
+                              [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
+                              [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); }});
     return f;
   }();
   return all;

@@ -50,6 +50,11 @@ void addBackendFields(const BackendFieldMakers& add) {
          [](B& b) -> double& { return b.solver.function_tolerance; });
   number("solver.parameter_tolerance", "stop when the relative step is below this",
          [](B& b) -> double& { return b.solver.parameter_tolerance; });
+  add.boolean("backend.solver.reduced_warm_start", "start the full solve from the reduced graph's solution",
+              [](Config& c) -> bool& { return c.backend.solver.reduced_warm_start; });
+  add.boolean("backend.online.reduced_graph",
+              "online re-optimisation over loop-endpoint anchors only (false: the full graph every loop)",
+              [](Config& c) -> bool& { return c.backend.online.reduced_graph; });
 }
 
 }  // namespace sgtllc::io::detail

@@ -1,5 +1,5 @@
 // The `backend.*` keys of the configuration YAML (config_yaml.cpp), kept apart so the back end's settings live in
-// one place. config_yaml.cpp owns the field machinery and passes it in as the three makers below.
+// one place. config_yaml.cpp owns the field machinery and passes it in as the makers below.
 #pragma once
 
 #include <functional>
@@ -18,6 +18,7 @@ struct BackendFieldMakers {
   std::function<void(std::string, std::string, std::function<backend::RobustLoss&(Config&)>,
                      std::vector<std::pair<std::string, backend::RobustLoss>>)>
       loss;
+  std::function<void(std::string, std::string, std::function<bool&(Config&)>)> boolean;
 };
 
 /// Adds every field of backend::BackendConfig, in struct order, with keys mirroring the struct.
