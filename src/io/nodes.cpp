@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "file_util.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io {
 namespace {
@@ -25,11 +26,11 @@ void parseRow(const std::vector<std::string_view>& tokens, const std::string& wh
   for (int k = 0; k < 3; ++k) {
     const std::string_view token = tokens[static_cast<size_t>(k)];
     if (!detail::parseReal(token, centre[k]) || !std::isfinite(centre[k])) {
-      throw Error(where + ": " + kAxisNames[k] + " '" + std::string(token) + "' is not a finite number");
+      throw Error(where + ": " + kAxisNames[k] + " " + quoteContent(token) + " is not a finite number");
     }
   }
   if (!detail::parseInteger(tokens[3], id)) {
-    throw Error(where + ": label '" + std::string(tokens[3]) + "' is not an unsigned 32-bit integer id");
+    throw Error(where + ": label " + quoteContent(tokens[3]) + " is not an unsigned 32-bit integer id");
   }
 }
 

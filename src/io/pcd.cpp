@@ -14,6 +14,7 @@
 
 #include "file_util.h"
 #include "pcd_header.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io {
 namespace {
@@ -180,12 +181,12 @@ LabeledCloud readAscii(std::string_view bytes, const PcdHeader& h, const XyzLabe
     const PcdField* fs[4] = {w.x, w.y, w.z, w.label};
     for (int k = 0; k < 4; ++k) {
       if (!detail::parseReal(tokens[fs[k]->token], v[k])) {
-        throw Error(where + ": field '" + fs[k]->name + "': '" + std::string(tokens[fs[k]->token]) +
-                    "' is not a number");
+        throw Error(where + ": field " + quoteContent(fs[k]->name) + ": " + quoteContent(tokens[fs[k]->token]) +
+                    " is not a number");
       }
     }
     const std::optional<uint32_t> label = labelFromReal(v[3]);
-    if (!label) badLabel(path, cloud.points.size(), std::string(tokens[w.label->token]));
+    if (!label) badLabel(path, cloud.points.size(), escapeContent(tokens[w.label->token]));
     cloud.points.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
     cloud.labels.push_back(*label);
   }
