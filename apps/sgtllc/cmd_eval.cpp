@@ -7,6 +7,7 @@
 #include "common.h"
 #include "sgtllc/eval/report.h"
 #include "sgtllc/io/config_yaml.h"
+#include "sgtllc/io/output_file.h"
 
 namespace fs = std::filesystem;
 
@@ -32,19 +33,20 @@ eval::GroundTruth loadTruth(const std::string& dir, bool required) {
   return eval::GroundTruth::fromKitti(poses, calib);
 }
 
-void checkReportFolder(const std::string& dir, bool force) {
-  if (dir.empty()) return;
-  if (fs::exists(fs::path(dir) / "report.md") && !force) {
-    throw Error(dir + ": already holds a report; choose another folder or pass --force to overwrite it");
-  }
-  if (fs::exists(dir) && !fs::is_directory(dir)) throw Error(dir + ": exists and is not a folder");
+/// Before any work: every file the report would write must be new (or --force), its folder creatable. The report
+/// writer checks again, and each file's final rename refuses one that appeared meanwhile.
+void checkReportFolder(const EvalCliOptions& o) {
+  if (o.report.empty()) return;
+  if (fs::exists(o.report) && !fs::is_directory(o.report)) throw Error(o.report + ": exists and is not a folder");
+  const auto files = o.pairs.empty() ? eval::sequenceReportFiles(o.report) : eval::pairListReportFiles(o.report);
+  io::checkOutputFiles(files, io::overwriteIf(o.force), true);
 }
 
 std::string summaryLine(const char* name, double value) { return std::string(name) + " " + fixed(value, 4); }
 
 void runEval(const EvalCliOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
-  checkReportFolder(o.report, o.force);
+  checkReportFolder(o);
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   eval::EvalOptions options;
   options.threads = config.threads;
@@ -64,7 +66,7 @@ void runEval(const EvalCliOptions& o) {
       info.data_note = "Only " + std::to_string(m.n_available) + " of " + std::to_string(m.n_pairs) +
                        " listed pairs have both frames in the input; the metrics cover those pairs only.";
     }
-    if (!o.report.empty()) eval::writePairListReport(o.report, run, m, info);
+    if (!o.report.empty()) eval::writePairListReport(o.report, run, m, info, io::overwriteIf(o.force));
     if (o.json) {
       std::cout << jsonText(eval::pairListMetricsJson(m, run)) << "\n";
       return;
@@ -84,7 +86,7 @@ void runEval(const EvalCliOptions& o) {
     const eval::SequenceRun run = eval::runSequenceEvaluation(source, truth, config, options);
     progress.finish();
     const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
-    if (!o.report.empty()) eval::writeSequenceReport(o.report, run, m, options, info);
+    if (!o.report.empty()) eval::writeSequenceReport(o.report, run, m, options, info, io::overwriteIf(o.force));
     if (o.json) {
       std::cout << jsonText(eval::sequenceMetricsJson(m)) << "\n";
       return;
@@ -122,7 +124,7 @@ void addEvalCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the metrics as one JSON object");
-  cmd->add_flag("--force", o->force, "overwrite an existing report in --report");
+  cmd->add_flag("--force", o->force, "overwrite existing report files in --report");
   cmd->callback([o] {
     o->command = commandLine();
     runEval(*o);

@@ -7,6 +7,7 @@
 #include "common.h"
 #include "sgtllc/eval/frame_source.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/io/output_file.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -42,7 +43,8 @@ std::string csv(const std::vector<Loop>& loops) {
 
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
-  if (!o.out.empty()) checkWritable(o.out, o.force);
+  // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
+  if (!o.out.empty()) io::checkOutputFile(o.out, io::overwriteIf(o.force));
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   LoopDetector detector(config);
 
@@ -73,7 +75,7 @@ void runSequence(const RunOptions& o) {
     progress.update(index + 1, std::to_string(loops.size()) + " loops");
   });
   progress.finish();
-  if (!o.out.empty()) writeFileAtomically(o.out, csv(loops));
+  if (!o.out.empty()) io::writeFileAtomically(o.out, csv(loops), io::overwriteIf(o.force));
 
   const int n = detector.numFrames();
   const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;

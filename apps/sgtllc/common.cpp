@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "sgtllc/io/config_yaml.h"
@@ -74,37 +73,6 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
   f.nodes = std::move(extracted.nodes);
   f.stats = extracted.stats;
   return f;
-}
-
-void checkWritable(const std::string& path, bool force) {
-  if (fs::is_directory(path)) throw Error("cannot write " + path + ": is a directory");
-  if (fs::exists(path) && !force) {
-    throw Error(path + ": file exists; choose another name or pass --force to overwrite it");
-  }
-  // Probe the folder now, so a bad path fails before minutes of work rather than after.
-  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-  if (!fs::is_directory(parent)) throw Error("cannot write " + path + ": folder " + parent.string() + " does not exist");
-  if (::access(parent.c_str(), W_OK) != 0) {
-    throw Error("cannot write " + path + ": folder " + parent.string() + " is not writable");
-  }
-}
-
-void writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw Error("cannot write " + path + ": cannot create " + tmp);
-    out << text;
-    out.flush();
-    if (!out) throw Error("cannot write " + path + " (disk full?)");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw Error("cannot write " + path + ": " + ec.message());
-  }
 }
 
 void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes, const char* unit) {

@@ -46,12 +46,6 @@ struct FrameNodes {
 FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path, const std::string& label_field,
                           const Config& config);
 
-/// Refuses to overwrite an existing file unless @p force: nothing a user gave us is overwritten by accident.
-void checkWritable(const std::string& path, bool force);
-
-/// Writes @p text to @p path via a temporary file and a rename, so a failure never leaves half a file.
-void writeFileAtomically(const std::string& path, const std::string& text);
-
 /// Warnings about dropped points (non-finite coordinates, unknown ids, no nodes) on stderr; @p unit names what
 /// carried the unknown ids ("points", or "node rows" for a node file).
 void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes,

@@ -62,7 +62,7 @@ std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, 
   return nodes;
 }
 
-void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes) {
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite) {
   detail::checkNodeLabels(path, nodes);
   for (size_t i = 0; i < nodes.size(); ++i) {
     if (!nodes[i].centre.allFinite()) {
@@ -77,7 +77,7 @@ void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes) {
     }
     out += std::to_string(kSemanticKittiRawId[static_cast<size_t>(node.label)]) + '\n';
   }
-  detail::writeFile(path, out);
+  writeFileAtomically(path, out, overwrite);
 }
 
 }  // namespace sgtllc::io

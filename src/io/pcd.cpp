@@ -211,7 +211,7 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
   throw Error(path + ": unsupported DATA type");  // unreachable: parsePcdHeader rejects the rest
 }
 
-void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes) {
+void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite) {
   detail::checkNodeLabels(path, nodes);
   const std::string n = std::to_string(nodes.size());
   std::string out =
@@ -233,7 +233,7 @@ void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes) {
     }
     out += std::to_string(node.label) + "\n";
   }
-  detail::writeFile(path, out);
+  writeFileAtomically(path, out, overwrite);
 }
 
 }  // namespace sgtllc::io
