@@ -2,10 +2,7 @@
 // with a message that names the file and the problem, and leaves every input and every existing file as it was.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +11,7 @@
 
 #include "sgtllc/eval/report.h"
 #include "sgtllc/io/output_file.h"
+#include "test_cli_support.h"
 #include "test_support.h"
 
 namespace sgtllc {
@@ -24,23 +22,9 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-struct CliRun {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
+using test::CliRun;
 
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(SGTLLC_CLI) + " " + args + " 2>&1";
-  CliRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int st = pclose(pipe);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+CliRun run(const std::string& args) { return test::runCli(args); }
 
 std::string readAll(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -59,17 +43,10 @@ std::map<std::string, std::string> snapshot(const fs::path& root) {
 
 std::string scan(const std::string& frame) { return test::dataPath("kitti/00/velodyne/" + frame + ".bin"); }
 
-class CliReliability : public ::testing::Test {
+class CliReliability : public test::CliTempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sgtllc_clirel_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  CliReliability() : CliTempDirTest("clirel") {}
 
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& bytes) const {
     fs::create_directories(fs::path(path(name)).parent_path());
     std::ofstream(path(name), std::ios::binary) << bytes;
@@ -97,8 +74,6 @@ class CliReliability : public ::testing::Test {
     }
     return r;
   }
-
-  fs::path dir_;
 };
 
 // --- existing output files -------------------------------------------------------------------------------------
