@@ -1,20 +1,23 @@
-// Shared by the command-line suites (test_cli*.cpp): runs the built `sgtllc` and captures its output.
+// Shared by the CLI suites: run the built sgtllc command and capture its output, in a fresh folder per test.
 #pragma once
 
 #include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace sgtllc::test {
 
 struct CliRun {
   int status = -1;
-  std::string out;  // stdout, and stderr unless left out
+  std::string out;  // stdout and, unless left out, stderr
 };
 
-/// Runs `sgtllc ARGS` through the shell; @p with_stderr = false drops stderr.
+/// Runs `sgtllc ARGS` through the shell.
 inline CliRun run(const std::string& args, bool with_stderr = true) {
   const std::string cmd = std::string(SGTLLC_CLI) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   CliRun r;
@@ -27,5 +30,24 @@ inline CliRun run(const std::string& args, bool with_stderr = true) {
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
 }
+
+/// A fresh folder per test, /tmp/sgtllc_PREFIX_TESTNAME, removed afterwards.
+class CliTempDirTest : public ::testing::Test {
+ protected:
+  explicit CliTempDirTest(std::string prefix) : prefix_(std::move(prefix)) {}
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("sgtllc_" + prefix_ + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::filesystem::path dir_;
+
+ private:
+  std::string prefix_;
+};
 
 }  // namespace sgtllc::test

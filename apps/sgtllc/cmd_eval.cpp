@@ -9,6 +9,7 @@
 #include "trajectory_metrics.h"
 #include "sgtllc/eval/report.h"
 #include "sgtllc/io/config_yaml.h"
+#include "sgtllc/io/output_file.h"
 
 namespace fs = std::filesystem;
 
@@ -36,12 +37,13 @@ eval::GroundTruth loadTruth(const std::string& dir, bool required) {
   return eval::GroundTruth::fromKitti(poses, calib);
 }
 
-void checkReportFolder(const std::string& dir, bool force) {
-  if (dir.empty()) return;
-  if (fs::exists(fs::path(dir) / "report.md") && !force) {
-    throw Error(dir + ": already holds a report; choose another folder or pass --force to overwrite it");
-  }
-  if (fs::exists(dir) && !fs::is_directory(dir)) throw Error(dir + ": exists and is not a folder");
+/// Before any work: every file the report would write must be new (or --force), its folder creatable. The report
+/// writer checks again, and each file's final rename refuses one that appeared meanwhile.
+void checkReportFolder(const EvalCliOptions& o) {
+  if (o.report.empty()) return;
+  if (fs::exists(o.report) && !fs::is_directory(o.report)) throw Error(o.report + ": exists and is not a folder");
+  const auto files = o.pairs.empty() ? eval::sequenceReportFiles(o.report) : eval::pairListReportFiles(o.report);
+  io::checkOutputFiles(files, io::overwriteIf(o.force), true);
 }
 
 std::string summaryLine(const char* name, double value) { return std::string(name) + " " + fixed(value, 4); }
@@ -72,16 +74,16 @@ struct EvalClosing {
   std::string section() const {
     return "## Loop closing\n\n```\n" + summary + "```\n\n" + comparisonMarkdown(comparison, "trajectory_topview.png");
   }
-  void writeReportFiles(const std::string& dir) const {
+  void writeReportFiles(const std::string& dir, bool force) const {
     io::writeTrajectory((fs::path(dir) / "corrected_trajectory.txt").string(),
-                        io::withPoses(odometry->trajectory, closing.poses));
+                        io::withPoses(odometry->trajectory, closing.poses), io::overwriteIf(force));
     plotClosing((fs::path(dir) / "trajectory_topview.png").string(), truth, *odometry, loops, closing);
   }
 };
 
 void runEval(const EvalCliOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
-  checkReportFolder(o.report, o.force);
+  checkReportFolder(o);
   EvalClosing back;
   if (!o.odometry.empty()) {
     if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
@@ -116,7 +118,7 @@ void runEval(const EvalCliOptions& o) {
       info.data_note = "Only " + std::to_string(m.n_available) + " of " + std::to_string(m.n_pairs) +
                        " listed pairs have both frames in the input; the metrics cover those pairs only.";
     }
-    if (!o.report.empty()) eval::writePairListReport(o.report, run, m, info);
+    if (!o.report.empty()) eval::writePairListReport(o.report, run, m, info, io::overwriteIf(o.force));
     if (o.json) {
       std::cout << jsonText(eval::pairListMetricsJson(m, run)) << "\n";
       return;
@@ -138,13 +140,13 @@ void runEval(const EvalCliOptions& o) {
     const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
     if (back.odometry) {
       back.finish(run, truth, config);
-      writeClosingOutputs(o.outputs, *back.odometry, back.loops, back.closing, config.backend);
+      writeClosingOutputs(o.outputs, *back.odometry, back.loops, back.closing, config.backend, o.force);
       extra.section = back.section();
       extra.metrics = back.json();
     }
     if (!o.report.empty()) {
-      eval::writeSequenceReport(o.report, run, m, options, info, extra);
-      if (back.odometry) back.writeReportFiles(o.report);
+      eval::writeSequenceReport(o.report, run, m, options, info, extra, io::overwriteIf(o.force));
+      if (back.odometry) back.writeReportFiles(o.report, o.force);
     }
     if (o.json) {
       Json j = eval::sequenceMetricsJson(m);

@@ -54,8 +54,9 @@ void writeReport(const OptimizeOptions& o, const Config& config, const Json& met
   fs::create_directories(o.report, ec);
   if (ec) throw Error("cannot create report folder " + o.report + ": " + ec.message());
   const fs::path dir(o.report);
-  io::writeTrajectory((dir / "corrected_trajectory.txt").string(), io::withPoses(odometry.trajectory, closing.poses));
-  writeFileAtomically((dir / "metrics.json").string(), jsonText(metrics) + "\n");
+  io::writeTrajectory((dir / "corrected_trajectory.txt").string(), io::withPoses(odometry.trajectory, closing.poses),
+                      io::overwriteIf(o.force));
+  writeOutput((dir / "metrics.json").string(), jsonText(metrics) + "\n", o.force);
   plotClosing((dir / "trajectory_topview.png").string(), truth, odometry, loops, closing);
   std::string md = "# Loop closing: pose-graph optimisation\n\nOdometry `" + o.odometry + "`, loops `" + o.loops +
                    "`" + (o.ground_truth.empty() ? "" : ", ground truth `" + o.ground_truth + "`") +
@@ -64,7 +65,7 @@ void writeReport(const OptimizeOptions& o, const Config& config, const Json& met
   md += section.empty() ? "![trajectories, top view](trajectory_topview.png)\n\n" : section;
   md += "Corrected trajectory: `corrected_trajectory.txt` (format and frame of the odometry); numbers: "
         "`metrics.json`.\n\n## Configuration\n\n```yaml\n" + io::configToYaml(config) + "```\n";
-  writeFileAtomically((dir / "report.md").string(), md);
+  writeOutput((dir / "report.md").string(), md, o.force);
 }
 
 void runOptimize(const OptimizeOptions& o) {
@@ -91,7 +92,7 @@ void runOptimize(const OptimizeOptions& o) {
   }
 
   const Closing closing = closeLoopsBatch(odometry, loops, config.backend);
-  writeClosingOutputs(o.outputs, odometry, loops, closing, config.backend);
+  writeClosingOutputs(o.outputs, odometry, loops, closing, config.backend, o.force);
 
   Json out = {{"odometry", o.odometry}, {"frames", names.size()}, {"loops_read", real},
               {"backend", closingJson(loops, closing)}};

@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "common.h"
 #include "sgtllc/io/nodes.h"
+#include "sgtllc/io/output_file.h"
 #include "sgtllc/io/ply.h"
 
 namespace sgtllc::cli {
@@ -34,25 +35,30 @@ struct ExportPaths {
   std::string q, m, qm, qn, mn;
 };
 
-/// Creates the export folder and checks every file can be written, before any work is done.
-ExportPaths prepareExport(const std::string& dir, bool force) {
+/// Checks, before any work and without creating anything, that every export file can be written.
+ExportPaths checkExport(const std::string& dir, bool force) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw Error("cannot create export folder " + dir + ": " + ec.message());
+  if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("cannot export to " + dir + ": it is a file, not a folder");
   const auto in_dir = [&](const char* name) { return (fs::path(dir) / name).string(); };
   ExportPaths p{in_dir("query.ply"), in_dir("match.ply"), in_dir("matches.ply"), in_dir("query_nodes.txt"),
                 in_dir("match_nodes.txt")};
-  for (const auto& path : {p.q, p.m, p.qm, p.qn, p.mn}) checkWritable(path, force);
+  io::checkOutputFiles({p.q, p.m, p.qm, p.qn, p.mn}, io::overwriteIf(force), true);
   return p;
 }
 
-void exportGraphs(const ExportPaths& p, const PairResult& r, const Config& config) {
+/// Creates the folder (only now that the inputs have been read) and writes the files; each final rename refuses
+/// a file that appeared since checkExport() unless --force.
+void exportGraphs(const std::string& dir, const ExportPaths& p, const PairResult& r, const Config& config,
+                  bool force) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw Error("cannot create export folder " + dir + ": " + ec.message());
+  const io::Overwrite overwrite = io::overwriteIf(force);
   const auto& [q, m, qm, qn, mn] = p;
-  io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0));
-  io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0));
-  io::writeNodesTxt(qn, r.query_nodes);
-  io::writeNodesTxt(mn, r.match_nodes);
+  io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0), overwrite);
+  io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0), overwrite);
+  io::writeNodesTxt(qn, r.query_nodes, overwrite);
+  io::writeNodesTxt(mn, r.match_nodes, overwrite);
 
   std::vector<Node> both = r.match_nodes;
   const int offset = static_cast<int>(both.size());
@@ -68,7 +74,7 @@ void exportGraphs(const ExportPaths& p, const PairResult& r, const Config& confi
     edges.push_back(io::PlyEdge{a.match, offset + a.query,
                                 inlier[k] ? std::array<uint8_t, 3>{0, 200, 0} : std::array<uint8_t, 3>{220, 0, 0}});
   }
-  io::writeGraphPly(qm, both, edges);
+  io::writeGraphPly(qm, both, edges, overwrite);
 }
 
 std::string inputSummary(const FrameNodes& f) {
@@ -127,7 +133,7 @@ void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
 
 void runPair(const PairOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
-  const ExportPaths paths = o.export_dir.empty() ? ExportPaths{} : prepareExport(o.export_dir, o.force);
+  const ExportPaths paths = o.export_dir.empty() ? ExportPaths{} : checkExport(o.export_dir, o.force);
   FrameNodes q = loadFrameNodes(o.query, o.labels_query, o.label_field, config);
   FrameNodes mt = loadFrameNodes(o.match, o.labels_match, o.label_field, config);
   for (const auto& [name, f] : {std::pair<const std::string&, const FrameNodes&>{o.query, q}, {o.match, mt}}) {
@@ -143,7 +149,7 @@ void runPair(const PairOptions& o) {
   } else {
     printText(o, r, q, mt, config, load_ms);
   }
-  if (!o.export_dir.empty()) exportGraphs(paths, r, config);
+  if (!o.export_dir.empty()) exportGraphs(o.export_dir, paths, r, config, o.force);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "sgtllc/eval/frame_source.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
+#include "sgtllc/io/output_file.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -46,6 +47,7 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
 
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
+  // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
@@ -99,9 +101,9 @@ void runSequence(const RunOptions& o) {
   std::unique_ptr<Closing> closing;
   if (odometry) {
     closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
-    writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend);
+    writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend, o.force);
   }
-  if (!o.out.empty()) writeFileAtomically(o.out, io::loopsCsvText(loops, true));
+  if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);
 
   const int n = detector.numFrames();
   const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;

@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "sgtllc/graph.h"
@@ -81,18 +80,7 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
   return f;
 }
 
-void checkWritable(const std::string& path, bool force) {
-  if (fs::is_directory(path)) throw Error("cannot write " + path + ": is a directory");
-  if (fs::exists(path) && !force) {
-    throw Error(path + ": file exists; choose another name or pass --force to overwrite it");
-  }
-  // Probe the folder now, so a bad path fails before minutes of work rather than after.
-  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-  if (!fs::is_directory(parent)) throw Error("cannot write " + path + ": folder " + parent.string() + " does not exist");
-  if (::access(parent.c_str(), W_OK) != 0) {
-    throw Error("cannot write " + path + ": folder " + parent.string() + " is not writable");
-  }
-}
+void checkWritable(const std::string& path, bool force) { io::checkOutputFile(path, io::overwriteIf(force)); }
 
 void checkReportFiles(const std::string& dir, const std::vector<std::string>& files, bool force) {
   if (!fs::exists(dir)) return;
@@ -100,22 +88,8 @@ void checkReportFiles(const std::string& dir, const std::vector<std::string>& fi
   for (const std::string& f : files) checkWritable((fs::path(dir) / f).string(), force);
 }
 
-void writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw Error("cannot write " + path + ": cannot create " + tmp);
-    out << text;
-    out.flush();
-    if (!out) throw Error("cannot write " + path + " (disk full?)");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw Error("cannot write " + path + ": " + ec.message());
-  }
+void writeOutput(const std::string& path, const std::string& text, bool force) {
+  io::writeFileAtomically(path, text, io::overwriteIf(force));
 }
 
 void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes, const char* unit) {

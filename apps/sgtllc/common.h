@@ -48,15 +48,16 @@ struct FrameNodes {
 FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path, const std::string& label_field,
                           const Config& config);
 
-/// Refuses to overwrite an existing file unless @p force: nothing a user gave us is overwritten by accident.
+/// Refuses an output file that exists (unless @p force), is a folder, or whose folder is missing or not
+/// writable: io::checkOutputFile with the CLI's --force. Called for every output before any work.
 void checkWritable(const std::string& path, bool force);
 
 /// A report folder may be written if it does not exist yet, or (unless @p force) holds none of @p files.
 /// Throws sgtllc::Error naming the first file that exists, or the folder if it is not one.
 void checkReportFiles(const std::string& dir, const std::vector<std::string>& files, bool force);
 
-/// Writes @p text to @p path via a temporary file and a rename, so a failure never leaves half a file.
-void writeFileAtomically(const std::string& path, const std::string& text);
+/// io::writeFileAtomically with the CLI's --force: a file that appeared since checkWritable() is kept.
+void writeOutput(const std::string& path, const std::string& text, bool force);
 
 /// Warnings about dropped points (non-finite coordinates, unknown ids, no nodes) on stderr; @p unit names what
 /// carried the unknown ids ("points", or "node rows" for a node file).

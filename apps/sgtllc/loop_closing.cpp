@@ -159,14 +159,16 @@ std::string onlineUpdateLine(const backend::BackendResult& r, double ms) {
 }
 
 void writeClosingOutputs(const ClosingOutputs& o, const Odometry& odometry, const std::vector<ClosingLoop>& loops,
-                         const Closing& closing, const backend::BackendConfig& config) {
-  if (!o.trajectory.empty()) io::writeTrajectory(o.trajectory, io::withPoses(odometry.trajectory, closing.poses));
+                         const Closing& closing, const backend::BackendConfig& config, bool force) {
+  if (!o.trajectory.empty()) {
+    io::writeTrajectory(o.trajectory, io::withPoses(odometry.trajectory, closing.poses), io::overwriteIf(force));
+  }
   if (!o.graph.empty()) {
     backend::PoseGraph graph;
     graph.poses = closing.poses;
     graph.edges = backend::odometryEdges(odometry.poses, config.odometry);
     for (const backend::Edge& e : acceptedLoopEdges(loops, closing.result)) graph.edges.push_back(e);
-    io::writeG2o(o.graph, graph);
+    io::writeG2o(o.graph, graph, io::overwriteIf(force));
   }
   if (!o.loops.empty()) {
     std::string text = "# sgtllc loops: EDGE_SE3:QUAT match query T_match_query information (g2o convention)\n";
@@ -179,7 +181,7 @@ void writeClosingOutputs(const ClosingOutputs& o, const Odometry& odometry, cons
       }
       text += io::g2oEdgesText({loops[k].edge});
     }
-    writeFileAtomically(o.loops, text);
+    writeOutput(o.loops, text, force);
   }
 }
 

@@ -103,7 +103,7 @@ std::string onlineUpdateLine(const backend::BackendResult& r, double ms);
 /// loops; the loop list every loop, each rejected or injected one after a `# ` comment saying so.
 void writeClosingOutputs(const ClosingOutputs& outputs, const Odometry& odometry,
                          const std::vector<ClosingLoop>& loops, const Closing& closing,
-                         const backend::BackendConfig& config);
+                         const backend::BackendConfig& config, bool force);
 
 /// Summary: loops / accepted / rejected by reason (and of the injected ones), solves, iterations, time.
 Json closingJson(const std::vector<ClosingLoop>& loops, const Closing& closing);

@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "sgtllc/io/quote.h"
 #include "sgtllc/parallel.h"
 
 namespace sgtllc::eval {
@@ -35,11 +36,15 @@ std::vector<LoopPairLabel> readPairList(const std::string& path) {
     tokens >> q >> c >> l;
     LoopPairLabel p;
     if (!parseFrame(q, &p.query) || !parseFrame(c, &p.candidate) || (l != "0" && l != "1") || (tokens >> extra)) {
-      throw Error(path + ":" + std::to_string(number) + ": expected 'query candidate label' (frame numbers and 0/1)");
+      throw Error(path + ":" + std::to_string(number) + ": expected 'query candidate label' (frame numbers and 0/1), " +
+                  "found " + io::quoteContent(line));
     }
     p.loop = l == "1";
     pairs.push_back(p);
   }
+  if (in.bad()) throw Error("cannot read pair list " + path);
+  // An empty list scores nothing and would print zero metrics: almost always the wrong file.
+  if (pairs.empty()) throw Error(path + ": the pair list has no pairs (only blank or '#' lines)");
   return pairs;
 }
 

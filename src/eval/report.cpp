@@ -1,7 +1,6 @@
 #include "sgtllc/eval/report.h"
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "report_plots.h"
@@ -11,19 +10,40 @@ namespace fs = std::filesystem;
 namespace sgtllc::eval {
 namespace {
 
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.flush();
-  if (!out) throw Error("cannot write " + path.string());
+constexpr const char* kSequenceFiles[] = {"metrics.json", "pr_curve.csv",  "frames.csv", "candidates.csv",
+                                           "pr_curves.png", "timing.png",    "memory.png", "trajectory.png",
+                                           "report.md"};
+constexpr const char* kPairListFiles[] = {"metrics.json", "pr_curve.csv", "pairs.csv", "pr_curves.png", "report.md"};
+
+template <size_t N>
+std::vector<std::string> inFolder(const std::string& dir, const char* const (&names)[N]) {
+  std::vector<std::string> paths;
+  for (const char* name : names) paths.push_back((fs::path(dir) / name).string());
+  return paths;
 }
 
-fs::path prepare(const std::string& dir) {
+/// Checks every file first (nothing is written if one of them may not be), then creates the folder.
+fs::path prepare(const std::string& dir, const std::vector<std::string>& files, io::Overwrite overwrite) {
+  if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("cannot write report: " + dir + " is not a folder");
+  io::checkOutputFiles(files, overwrite, true);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) throw Error("cannot create report folder " + dir + ": " + ec.message());
   return fs::path(dir);
 }
+
+/// The report's writers, bound to its folder and overwrite rule.
+struct ReportWriter {
+  fs::path dir;
+  io::Overwrite overwrite;
+  void text(const char* name, const std::string& content) const {
+    io::writeFileAtomically((dir / name).string(), content, overwrite);
+  }
+  template <typename Plot>
+  void png(const char* name, Plot&& plot) const {
+    io::writeThroughTemporary((dir / name).string(), overwrite, plot);
+  }
+};
 
 std::string prCsv(const std::vector<std::pair<std::string, const CurveMetrics*>>& curves) {
   std::ostringstream s;
@@ -62,16 +82,20 @@ std::string configSection(const ReportInfo& info) {
 
 }  // namespace
 
+std::vector<std::string> sequenceReportFiles(const std::string& dir) { return inFolder(dir, kSequenceFiles); }
+std::vector<std::string> pairListReportFiles(const std::string& dir) { return inFolder(dir, kPairListFiles); }
+
 void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
-                         const EvalOptions& options, const ReportInfo& info, const ReportExtra& extra) {
-  const fs::path out = prepare(dir);
+                         const EvalOptions& options, const ReportInfo& info, const ReportExtra& extra,
+                         io::Overwrite overwrite) {
+  const ReportWriter out{prepare(dir, sequenceReportFiles(dir), overwrite), overwrite};
   Json metrics = sequenceMetricsJson(m);
   for (const auto& [key, value] : extra.metrics.items()) metrics[key] = value;
-  writeText(out / "metrics.json", metrics.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+  out.text("metrics.json", metrics.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
   std::vector<std::pair<std::string, const CurveMetrics*>> curves;
   for (const CurveMetrics& c : m.pairwise) curves.emplace_back("pairwise", &c);
   curves.emplace_back("top1", &m.top1);
-  writeText(out / "pr_curve.csv", prCsv(curves));
+  out.text("pr_curve.csv", prCsv(curves));
 
   std::ostringstream frames;
   frames << "frame,nodes,queried,has_revisit,loop,match,score,match_distance_m,extraction_ms,description_ms,"
@@ -86,7 +110,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
     else frames << ",";
     frames << "\n";
   }
-  writeText(out / "frames.csv", frames.str());
+  out.text("frames.csv", frames.str());
 
   std::ostringstream pairs;
   pairs << "query,candidate,distance_m,score,score_c,rejection\n";
@@ -96,12 +120,14 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
             << rejectionName(c.rejection) << "\n";
     }
   }
-  writeText(out / "candidates.csv", pairs.str());
+  out.text("candidates.csv", pairs.str());
 
-  plotPrCurves((out / "pr_curves.png").string(), m.pairwise, &m.top1, "Precision-recall (pairwise protocol, top-15)");
-  plotTiming((out / "timing.png").string(), run);
-  plotMemory((out / "memory.png").string(), run);
-  plotTrajectory((out / "trajectory.png").string(), run, options);
+  out.png("pr_curves.png", [&](const std::string& tmp) {
+    plotPrCurves(tmp, m.pairwise, &m.top1, "Precision-recall (pairwise protocol, top-15)");
+  });
+  out.png("timing.png", [&](const std::string& tmp) { plotTiming(tmp, run); });
+  out.png("memory.png", [&](const std::string& tmp) { plotMemory(tmp, run); });
+  out.png("trajectory.png", [&](const std::string& tmp) { plotTrajectory(tmp, run, options); });
 
   const CurveMetrics& main = m.pairwise.at(0);
   std::ostringstream md;
@@ -140,15 +166,14 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
         "\n\n![database size](memory.png)\n\nTables: `pr_curve.csv`, `frames.csv`, `candidates.csv` (every scored "
         "pair); numbers: `metrics.json`.\n\n"
      << configSection(info);
-  writeText(out / "report.md", md.str());
+  out.text("report.md", md.str());
 }
 
 void writePairListReport(const std::string& dir, const PairListRun& run, const PairListMetrics& m,
-                         const ReportInfo& info) {
-  const fs::path out = prepare(dir);
-  writeText(out / "metrics.json",
-            pairListMetricsJson(m, run, 1000).dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
-  writeText(out / "pr_curve.csv", prCsv({{"pairs", &m.curve}}));
+                         const ReportInfo& info, io::Overwrite overwrite) {
+  const ReportWriter out{prepare(dir, pairListReportFiles(dir), overwrite), overwrite};
+  out.text("metrics.json", pairListMetricsJson(m, run, 1000).dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+  out.text("pr_curve.csv", prCsv({{"pairs", &m.curve}}));
   std::ostringstream pairs;
   pairs << "query,candidate,label,available,loop,score,score_c,rte_m,rre_deg\n";
   for (const PairRecord& r : run.pairs) {
@@ -158,8 +183,10 @@ void writePairListReport(const std::string& dir, const PairListRun& run, const P
     else pairs << ",";
     pairs << "\n";
   }
-  writeText(out / "pairs.csv", pairs.str());
-  plotPrCurves((out / "pr_curves.png").string(), {m.curve}, nullptr, "Precision-recall over the listed pairs");
+  out.text("pairs.csv", pairs.str());
+  out.png("pr_curves.png", [&](const std::string& tmp) {
+    plotPrCurves(tmp, {m.curve}, nullptr, "Precision-recall over the listed pairs");
+  });
 
   std::ostringstream md;
   md << "# Loop-closure evaluation over a pair list\n\n" << provenance(info);
@@ -172,7 +199,7 @@ void writePairListReport(const std::string& dir, const PairListRun& run, const P
      << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3) << " m / "
      << fixed(m.poses.rre_mean, 3) << "° |\n\n![PR curve](pr_curves.png)\n\nPer pair: `pairs.csv`.\n\n"
      << configSection(info);
-  writeText(out / "report.md", md.str());
+  out.text("report.md", md.str());
 }
 
 }  // namespace sgtllc::eval

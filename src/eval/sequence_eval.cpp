@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sgtllc/io/quote.h"
+
 namespace sgtllc::eval {
 
 SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& truth, const Config& config,
@@ -11,7 +13,7 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
   for (size_t i = 0; i < source.size(); ++i) {
     numbers[i] = source.number(i);
     if (!truth.has(numbers[i])) {
-      throw Error("frame '" + source.name(i) + "' has no ground-truth pose (poses.txt has " +
+      throw Error("frame " + io::quoteContent(source.name(i)) + " has no ground-truth pose (poses.txt has " +
                   std::to_string(truth.size()) + " lines; frames must be named by their line number)");
     }
     run.positions.push_back(truth.pose(numbers[i]).topRightCorner<3, 1>());

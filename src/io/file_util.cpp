@@ -26,13 +26,6 @@ std::string readWholeFile(const std::string& path) {
   return bytes;
 }
 
-void writeFile(const std::string& path, std::string_view content) {
-  FilePtr file(std::fopen(path.c_str(), "wb"), &std::fclose);
-  if (!file) throw Error("cannot write " + path + ": " + std::strerror(errno));
-  const bool written = std::fwrite(content.data(), 1, content.size(), file.get()) == content.size();
-  if (!written || std::fclose(file.release()) != 0) throw Error("cannot write " + path + ": " + std::strerror(errno));
-}
-
 void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes) {
   for (size_t i = 0; i < nodes.size(); ++i) {
     if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {

@@ -42,9 +42,6 @@ FilePtr openForReading(const std::string& path);
 /// The whole contents of a file (opened as openForReading); throws `cannot read PATH: REASON` on a read error.
 std::string readWholeFile(const std::string& path);
 
-/// Creates or replaces @p path with @p content. Throws `cannot write PATH: REASON`.
-void writeFile(const std::string& path, std::string_view content);
-
 /// Throws `cannot write PATH: node I has label L, not a stable class index 0..6` for the first node whose label is
 /// not a stable class index. Writers call it before creating the file.
 void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes);

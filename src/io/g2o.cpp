@@ -8,7 +8,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "atomic_file.h"
+#include "sgtllc/io/output_file.h"
 #include "file_util.h"
 #include "sgtllc/types.h"
 
@@ -141,12 +141,12 @@ std::string g2oEdgesText(const std::vector<backend::Edge>& edges) {
   return out;
 }
 
-void writeG2o(const std::string& path, const backend::PoseGraph& graph) {
-  detail::writeFileAtomically(path, g2oText(graph));
+void writeG2o(const std::string& path, const backend::PoseGraph& graph, Overwrite overwrite) {
+  writeFileAtomically(path, g2oText(graph), overwrite);
 }
 
-void writeG2oEdges(const std::string& path, const std::vector<backend::Edge>& edges) {
-  detail::writeFileAtomically(path, g2oEdgesText(edges));
+void writeG2oEdges(const std::string& path, const std::vector<backend::Edge>& edges, Overwrite overwrite) {
+  writeFileAtomically(path, g2oEdgesText(edges), overwrite);
 }
 
 backend::PoseGraph readG2o(const std::string& path) {

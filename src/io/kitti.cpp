@@ -12,6 +12,7 @@
 #include <Eigen/LU>
 
 #include "file_util.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io {
 namespace {
@@ -61,7 +62,7 @@ Eigen::Matrix4d parseRowMajor3x4(const std::vector<std::string_view>& tokens, si
     const std::string_view token = tokens[first + static_cast<size_t>(k)];
     double& value = T(k / 4, k % 4);
     if (!detail::parseReal(token, value) || !std::isfinite(value)) {
-      throw Error(where + ": '" + std::string(token) + "' is not a finite number");
+      throw Error(where + ": " + quoteContent(token) + " is not a finite number");
     }
   }
   return T;

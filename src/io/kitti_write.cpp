@@ -14,9 +14,9 @@ namespace {
 
 /// Writes 4-byte words in little-endian order.
 template <typename T>
-void writeWords(const std::string& path, std::vector<T> words) {
+void writeWords(const std::string& path, std::vector<T> words, Overwrite overwrite) {
   detail::swapWordsIfBigEndian(words);
-  detail::writeFile(path, std::string_view(reinterpret_cast<const char*>(words.data()), 4 * words.size()));
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(words.data()), 4 * words.size()), overwrite);
 }
 
 /// A 3×4 matrix as 12 row-major numbers in KITTI calib.txt's notation.
@@ -47,7 +47,7 @@ constexpr double kTr[12] = {4.276802385584e-04,  -9.999672484946e-01, -8.0844916
 }  // namespace
 
 void writeKittiBin(const std::string& path, const std::vector<Eigen::Vector3f>& points,
-                   const std::vector<float>& intensity) {
+                   const std::vector<float>& intensity, Overwrite overwrite) {
   if (points.size() != intensity.size()) {
     throw Error("cannot write " + path + ": " + std::to_string(points.size()) + " points but " +
                 std::to_string(intensity.size()) + " intensities");
@@ -59,10 +59,12 @@ void writeKittiBin(const std::string& path, const std::vector<Eigen::Vector3f>& 
     words[4 * i + 2] = points[i].z();
     words[4 * i + 3] = intensity[i];
   }
-  writeWords(path, std::move(words));
+  writeWords(path, std::move(words), overwrite);
 }
 
-void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels) { writeWords(path, labels); }
+void writeLabelFile(const std::string& path, const std::vector<uint32_t>& labels, Overwrite overwrite) {
+  writeWords(path, labels, overwrite);
+}
 
 std::string kittiPosesText(const std::vector<Eigen::Matrix4d>& poses) {
   std::string text;
@@ -76,12 +78,12 @@ std::string kittiPosesText(const std::vector<Eigen::Matrix4d>& poses) {
   return text;
 }
 
-void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>& poses) {
-  detail::writeFile(path, kittiPosesText(poses));
+void writeKittiPoses(const std::string& path, const std::vector<Eigen::Matrix4d>& poses, Overwrite overwrite) {
+  writeFileAtomically(path, kittiPosesText(poses), overwrite);
 }
 
 void writeKittiCalib(const std::string& path, const std::array<Eigen::Matrix<double, 3, 4>, 4>& P,
-                     const Eigen::Matrix4d& Tr) {
+                     const Eigen::Matrix4d& Tr, Overwrite overwrite) {
   std::string text;
   for (int k = 0; k < 4; ++k) {
     text += "P" + std::to_string(k) + ": ";
@@ -89,17 +91,17 @@ void writeKittiCalib(const std::string& path, const std::array<Eigen::Matrix<dou
   }
   text += "Tr: ";
   appendRow12(text, Tr.topRows<3>());
-  detail::writeFile(path, text);
+  writeFileAtomically(path, text, overwrite);
 }
 
-void writeKittiTimes(const std::string& path, const std::vector<double>& times) {
+void writeKittiTimes(const std::string& path, const std::vector<double>& times, Overwrite overwrite) {
   std::string text;
   char buf[32];
   for (double t : times) {
     std::snprintf(buf, sizeof(buf), "%e\n", t);
     text += buf;
   }
-  detail::writeFile(path, text);
+  writeFileAtomically(path, text, overwrite);
 }
 
 std::array<Eigen::Matrix<double, 3, 4>, 4> kittiProjections() {

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "file_util.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io {
 namespace {
@@ -25,11 +26,11 @@ void parseRow(const std::vector<std::string_view>& tokens, const std::string& wh
   for (int k = 0; k < 3; ++k) {
     const std::string_view token = tokens[static_cast<size_t>(k)];
     if (!detail::parseReal(token, centre[k]) || !std::isfinite(centre[k])) {
-      throw Error(where + ": " + kAxisNames[k] + " '" + std::string(token) + "' is not a finite number");
+      throw Error(where + ": " + kAxisNames[k] + " " + quoteContent(token) + " is not a finite number");
     }
   }
   if (!detail::parseInteger(tokens[3], id)) {
-    throw Error(where + ": label '" + std::string(tokens[3]) + "' is not an unsigned 32-bit integer id");
+    throw Error(where + ": label " + quoteContent(tokens[3]) + " is not an unsigned 32-bit integer id");
   }
 }
 
@@ -61,7 +62,7 @@ std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, 
   return nodes;
 }
 
-void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes) {
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite) {
   detail::checkNodeLabels(path, nodes);
   for (size_t i = 0; i < nodes.size(); ++i) {
     if (!nodes[i].centre.allFinite()) {
@@ -76,7 +77,7 @@ void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes) {
     }
     out += std::to_string(kSemanticKittiRawId[static_cast<size_t>(node.label)]) + '\n';
   }
-  detail::writeFile(path, out);
+  writeFileAtomically(path, out, overwrite);
 }
 
 }  // namespace sgtllc::io

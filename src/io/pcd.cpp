@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string_view>
 
@@ -13,6 +14,7 @@
 
 #include "file_util.h"
 #include "pcd_header.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io {
 namespace {
@@ -113,6 +115,11 @@ LabeledCloud readBinary(std::string_view bytes, const PcdHeader& h, const XyzLab
   return decodeBinary(bytes.data() + h.data_offset, h, w, aos, path);
 }
 
+/// LZF's largest expansion: a 3-byte back reference copies at most 264 bytes (liblzf lzf_d.c), so a block of
+/// P compressed bytes never unpacks to more than 88 P. Checked before allocating, so a header that claims gigabytes
+/// over a few bytes of data fails at once instead of reserving the memory.
+constexpr uint64_t kLzfMaxExpansion = 88;
+
 /// DATA binary_compressed: uint32 compressed size, uint32 uncompressed size, then LZF data that decompresses to
 /// the fields stored one after another (structure of arrays: all x, then all y, …).
 LabeledCloud readCompressed(std::string_view bytes, const PcdHeader& h, const XyzLabelFields& w,
@@ -122,25 +129,40 @@ LabeledCloud readCompressed(std::string_view bytes, const PcdHeader& h, const Xy
   const char* p = bytes.data() + h.data_offset;
   const uint32_t packed = load<uint32_t>(p);
   const uint32_t unpacked = load<uint32_t>(p + 4);
+  // Every size is checked against the file and against each other before anything is allocated.
+  if (have - 8 < packed) truncated(path, "binary_compressed", size_t{8} + packed, have, h.points);
   const size_t need = dataBytes(h, path);
   if (unpacked != need) {
     throw Error(path + ": binary_compressed block unpacks to " + std::to_string(unpacked) + " bytes but " +
                 std::to_string(h.points) + " points of " + std::to_string(h.point_bytes) + " bytes need " +
                 std::to_string(need));
   }
-  if (have - 8 < packed) truncated(path, "binary_compressed", size_t{8} + packed, have, h.points);
-  std::vector<char> soa(need);
-  if (need > 0 && lzf_decompress(p + 8, packed, soa.data(), unpacked) != unpacked) {
+  if (unpacked > kLzfMaxExpansion * packed) {
+    throw Error(path + ": binary_compressed block claims " + std::to_string(unpacked) + " bytes from " +
+                std::to_string(packed) + " compressed bytes (LZF expands at most " +
+                std::to_string(kLzfMaxExpansion) + " times): POINTS " + std::to_string(h.points) +
+                " does not match the data");
+  }
+  // Not zero-filled: LZF writes every byte it reports, and a short result is an error.
+  std::unique_ptr<char[]> soa(new char[std::max<size_t>(need, 1)]);
+  if (need > 0 && lzf_decompress(p + 8, packed, soa.get(), unpacked) != unpacked) {
     throw Error(path + ": binary_compressed data is corrupt (LZF decompression failed)");
   }
   auto columns = [&h](const PcdField& f) { return Column{h.points * f.offset, f.bytes()}; };
-  return decodeBinary(soa.data(), h, w, columns, path);
+  return decodeBinary(soa.get(), h, w, columns, path);
 }
 
 /// DATA ascii: one point per line, values separated by blanks; blank lines are ignored.
 LabeledCloud readAscii(std::string_view bytes, const PcdHeader& h, const XyzLabelFields& w, const std::string& path) {
+  // Each point takes at least two bytes per value (a digit and a blank or newline; the last newline may be
+  // missing), so a POINTS the data section cannot hold fails before reading.
+  const size_t have = bytes.size() - h.data_offset;
+  if (h.points > 0 && h.point_tokens > 0 && (have + 1) / (2 * h.point_tokens) < h.points) {
+    throw Error(path + ": POINTS " + std::to_string(h.points) + " cannot fit in the " + std::to_string(have) +
+                " bytes of ascii data (" + std::to_string(h.point_tokens) + " values per point)");
+  }
   LabeledCloud cloud;
-  const size_t reserve = std::min(h.points, bytes.size() - h.data_offset);  // a lying POINTS must not allocate
+  const size_t reserve = std::min(h.points, have);  // a lying POINTS must not allocate
   cloud.points.reserve(reserve);
   cloud.labels.reserve(reserve);
   size_t pos = h.data_offset;
@@ -159,12 +181,12 @@ LabeledCloud readAscii(std::string_view bytes, const PcdHeader& h, const XyzLabe
     const PcdField* fs[4] = {w.x, w.y, w.z, w.label};
     for (int k = 0; k < 4; ++k) {
       if (!detail::parseReal(tokens[fs[k]->token], v[k])) {
-        throw Error(where + ": field '" + fs[k]->name + "': '" + std::string(tokens[fs[k]->token]) +
-                    "' is not a number");
+        throw Error(where + ": field " + quoteContent(fs[k]->name) + ": " + quoteContent(tokens[fs[k]->token]) +
+                    " is not a number");
       }
     }
     const std::optional<uint32_t> label = labelFromReal(v[3]);
-    if (!label) badLabel(path, cloud.points.size(), std::string(tokens[w.label->token]));
+    if (!label) badLabel(path, cloud.points.size(), escapeContent(tokens[w.label->token]));
     cloud.points.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
     cloud.labels.push_back(*label);
   }
@@ -189,7 +211,7 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
   throw Error(path + ": unsupported DATA type");  // unreachable: parsePcdHeader rejects the rest
 }
 
-void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes) {
+void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite) {
   detail::checkNodeLabels(path, nodes);
   const std::string n = std::to_string(nodes.size());
   std::string out =
@@ -211,7 +233,7 @@ void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes) {
     }
     out += std::to_string(node.label) + "\n";
   }
-  detail::writeFile(path, out);
+  writeFileAtomically(path, out, overwrite);
 }
 
 }  // namespace sgtllc::io

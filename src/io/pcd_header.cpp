@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "file_util.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io::detail {
@@ -26,8 +27,8 @@ PcdData parseDataKind(std::string_view value, const std::string& path, size_t li
   if (value == "ascii") return PcdData::kAscii;
   if (value == "binary") return PcdData::kBinary;
   if (value == "binary_compressed") return PcdData::kBinaryCompressed;
-  throw Error(path + ":" + std::to_string(line) + ": unsupported DATA type '" + std::string(value) +
-              "' (expected ascii, binary or binary_compressed)");
+  throw Error(path + ":" + std::to_string(line) + ": unsupported DATA type " + quoteContent(value) +
+              " (expected ascii, binary or binary_compressed)");
 }
 
 size_t headerSize(const HeaderLine& entry, const std::string& path, const char* key) {
@@ -58,11 +59,11 @@ std::vector<PcdField> buildFields(const HeaderLine& names, const HeaderLine& siz
     PcdField& f = fields[i];
     f.name = std::string(names.values[i]);
     if (!parseInteger(sizes.values[i], f.size) || (f.size != 1 && f.size != 2 && f.size != 4 && f.size != 8)) {
-      badHeader(path, sizes.line, "SIZE '" + std::string(sizes.values[i]) + "' is not 1, 2, 4 or 8");
+      badHeader(path, sizes.line, "SIZE " + quoteContent(sizes.values[i]) + " is not 1, 2, 4 or 8");
     }
     const std::string_view type = types.values[i];
     if (type != "I" && type != "U" && type != "F") {
-      badHeader(path, types.line, "TYPE '" + std::string(type) + "' is not I, U or F");
+      badHeader(path, types.line, "TYPE " + quoteContent(type) + " is not I, U or F");
     }
     f.type = type[0];
     // A bound far above any real field (PCL's largest are 308-float histograms) keeps SIZE × COUNT and the sum
@@ -70,7 +71,7 @@ std::vector<PcdField> buildFields(const HeaderLine& names, const HeaderLine& siz
     constexpr size_t kMaxCount = size_t{1} << 20;
     if (counts && (!parseInteger(counts->values[i], f.count) || f.count == 0 || f.count > kMaxCount)) {
       badHeader(path, counts->line,
-                "COUNT '" + std::string(counts->values[i]) + "' is not an integer in 1.." + std::to_string(kMaxCount));
+                "COUNT " + quoteContent(counts->values[i]) + " is not an integer in 1.." + std::to_string(kMaxCount));
     }
   }
   return fields;
@@ -89,7 +90,7 @@ std::string fieldList(const PcdHeader& h) {
   std::string names;
   for (const PcdField& f : h.fields) {
     if (!names.empty()) names += ' ';
-    names += f.name;
+    names += escapeContent(f.name);
   }
   return names;
 }
@@ -98,12 +99,12 @@ const PcdField& findField(const PcdHeader& h, const std::string& name, const std
   for (const PcdField& f : h.fields) {
     if (f.name == name) {
       if (f.count != 1) {
-        throw Error(path + ": field '" + name + "' has COUNT " + std::to_string(f.count) + "; expected 1");
+        throw Error(path + ": field " + quoteContent(name) + " has COUNT " + std::to_string(f.count) + "; expected 1");
       }
       return f;
     }
   }
-  throw Error(path + ": no field '" + name + "' (fields: " + fieldList(h) + ")");
+  throw Error(path + ": no field " + quoteContent(name) + " (fields: " + fieldList(h) + ")");
 }
 
 }  // namespace
@@ -132,7 +133,7 @@ PcdHeader parsePcdHeader(std::string_view text, const std::string& path) {
       continue;
     }
     const auto* slot = std::find(std::begin(keys), std::end(keys), key);
-    if (slot == std::end(keys)) badHeader(path, line_no, "unknown keyword '" + std::string(key) + "'");
+    if (slot == std::end(keys)) badHeader(path, line_no, "unknown keyword " + quoteContent(key));
     *slots[slot - std::begin(keys)] = entry;
   }
   if (!have_data) throw Error(path + ": PCD header has no DATA line");
@@ -160,11 +161,11 @@ XyzLabelFields resolveFields(const PcdHeader& h, const std::string& label_field,
                    &findField(h, label_field, path)};
   for (const PcdField* f : {w.x, w.y, w.z}) {
     if (f->type != 'F' || (f->size != 4 && f->size != 8)) {
-      throw Error(path + ": field '" + f->name + "' is " + typeName(*f) + "; expected F4 or F8");
+      throw Error(path + ": field " + quoteContent(f->name) + " is " + typeName(*f) + "; expected F4 or F8");
     }
   }
   if (w.label->type == 'F' && w.label->size < 4) {
-    throw Error(path + ": label field '" + label_field + "' is " + typeName(*w.label) + "; expected F4 or F8");
+    throw Error(path + ": label field " + quoteContent(label_field) + " is " + typeName(*w.label) + "; expected F4 or F8");
   }
   return w;
 }

@@ -67,7 +67,8 @@ std::array<uint8_t, 3> classColor(int label) {
   return kPalette[static_cast<size_t>(label)];
 }
 
-void writeGraphPly(const std::string& path, const std::vector<Node>& nodes, const std::vector<PlyEdge>& edges) {
+void writeGraphPly(const std::string& path, const std::vector<Node>& nodes, const std::vector<PlyEdge>& edges,
+                   Overwrite overwrite) {
   checkGraph(path, nodes, edges);
   std::string out = header(nodes.size(), edges.size());
   for (const Node& node : nodes) {
@@ -84,7 +85,7 @@ void writeGraphPly(const std::string& path, const std::vector<Node>& nodes, cons
     appendColor(out, e.color);
     out += '\n';
   }
-  detail::writeFile(path, out);
+  writeFileAtomically(path, out, overwrite);
 }
 
 }  // namespace sgtllc::io

@@ -9,7 +9,7 @@
 
 #include <Eigen/LU>
 
-#include "atomic_file.h"
+#include "sgtllc/io/output_file.h"
 #include "file_util.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/kitti_write.h"
@@ -181,14 +181,14 @@ std::string trajectoryText(const Trajectory& trajectory) {
   return kittiPosesText(poses);
 }
 
-void writeTrajectory(const std::string& path, const Trajectory& trajectory) {
+void writeTrajectory(const std::string& path, const Trajectory& trajectory, Overwrite overwrite) {
   std::string text;
   try {
     text = trajectoryText(trajectory);
   } catch (const Error& e) {
     throw Error("cannot write " + path + ": " + e.what());
   }
-  detail::writeFileAtomically(path, text);
+  writeFileAtomically(path, text, overwrite);
 }
 
 Trajectory withPoses(const Trajectory& trajectory, std::vector<Eigen::Isometry3d> poses) {

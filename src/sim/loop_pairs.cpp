@@ -1,10 +1,8 @@
 #include "sgtllc/sim/loop_pairs.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <set>
 #include <utility>
@@ -66,12 +64,14 @@ std::vector<LoopPair> loopPairs(const std::vector<Eigen::Matrix4d>& lidar_poses,
   return pairs;
 }
 
-void writeLoopPairs(const std::string& path, const std::vector<LoopPair>& pairs) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) throw Error("cannot write " + path + ": " + std::strerror(errno));
-  bool ok = true;
-  for (const LoopPair& p : pairs) ok = ok && std::fprintf(file, "%06d %06d %d\n", p.query, p.candidate, p.loop ? 1 : 0) > 0;
-  if (std::fclose(file) != 0 || !ok) throw Error("cannot write " + path + ": " + std::strerror(errno));
+void writeLoopPairs(const std::string& path, const std::vector<LoopPair>& pairs, io::Overwrite overwrite) {
+  std::string text;
+  char line[64];
+  for (const LoopPair& p : pairs) {
+    std::snprintf(line, sizeof(line), "%06d %06d %d\n", p.query, p.candidate, p.loop ? 1 : 0);
+    text += line;
+  }
+  io::writeFileAtomically(path, text, overwrite);
 }
 
 }  // namespace sgtllc::sim

@@ -58,7 +58,8 @@ Color kindColor(VisitKind k) {
 
 const char* semanticName(uint16_t id) { return styleOf(id).name; }
 
-void writeScanPreview(const std::string& path, const SimFrame& frame, const std::string& title) {
+void writeScanPreview(const std::string& path, const SimFrame& frame, const std::string& title,
+                      io::Overwrite overwrite) {
   constexpr double kHalf = 50.0;
   // Low points first, so poles, trunks and signs stay visible over the ground.
   std::vector<size_t> order(frame.points.size());
@@ -94,11 +95,12 @@ void writeScanPreview(const std::string& path, const SimFrame& frame, const std:
     std::snprintf(share, sizeof(share), " %.1f%%", 100.0 * c / std::max(1.0, total));
     fig.legendEntry(styleOf(id).name + std::string(share), styleOf(id).color);
   }
-  fig.savePng(path);
+  io::writeThroughTemporary(path, overwrite, [&](const std::string& tmp) { fig.savePng(tmp); });
 }
 
 void writeTrajectoryPreview(const std::string& path, const Simulator& sim,
-                            const std::vector<Eigen::Matrix4d>& lidar_poses, const std::vector<LoopPair>& pairs) {
+                            const std::vector<Eigen::Matrix4d>& lidar_poses, const std::vector<LoopPair>& pairs,
+                            io::Overwrite overwrite) {
   plot::Figure fig(1400, 1400);
   const Eigen::Matrix4d to0 = sim.poses()[0].T_world_lidar.inverse();
   auto local = [&](const Eigen::Vector2d& w) {
@@ -161,7 +163,7 @@ void writeTrajectoryPreview(const std::string& path, const Simulator& sim,
   }
   fig.xlim(x0 - 40, x1 + 40);
   fig.ylim(y0 - 40, y1 + 40);
-  fig.savePng(path);
+  io::writeThroughTemporary(path, overwrite, [&](const std::string& tmp) { fig.savePng(tmp); });
 }
 
 }  // namespace sgtllc::sim

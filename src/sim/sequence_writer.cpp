@@ -111,6 +111,8 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   prepareOutputDir(options.dir, options.force);
   const std::string& dir = options.dir;
   const int n = sim.numFrames();
+  // Without --force the folder was empty a moment ago: refuse any file that has appeared in it since.
+  const io::Overwrite overwrite = io::overwriteIf(options.force);
 
   // Poses in the KITTI convention: cam0 of frame i in cam0 of frame 0, P_i = Tr · T_lidar0_lidari · Tr⁻¹.
   const Eigen::Matrix4d Tr = io::kittiVelodyneToCam0();
@@ -123,18 +125,18 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
     cam[i] = Tr * lidar0[i] * Tr_inv;
     times[i] = sim.poses()[i].time;
   }
-  io::writeKittiCalib(dir + "/calib.txt", io::kittiProjections(), Tr);
-  io::writeKittiPoses(dir + "/poses.txt", cam);
+  io::writeKittiCalib(dir + "/calib.txt", io::kittiProjections(), Tr, overwrite);
+  io::writeKittiPoses(dir + "/poses.txt", cam, overwrite);
   const std::vector<Eigen::Matrix4d> odometry = driftingOdometry(lidar0, options.odometry, sim.config().seed);
   std::vector<Eigen::Matrix4d> odometry_cam(n);
   for (int i = 0; i < n; ++i) odometry_cam[i] = Tr * odometry[i] * Tr_inv;
-  io::writeKittiPoses(dir + "/odometry.txt", odometry_cam);
-  io::writeKittiTimes(dir + "/times.txt", times);
+  io::writeKittiPoses(dir + "/odometry.txt", odometry_cam, overwrite);
+  io::writeKittiTimes(dir + "/times.txt", times, overwrite);
   LoopPairOptions pair_options;
   pair_options.seed = sim.config().seed;
   const std::vector<Eigen::Matrix4d> lidar = readBackLidarPoses(dir);
   const std::vector<LoopPair> pairs = loopPairs(lidar, pair_options);
-  writeLoopPairs(dir + "/loop_pairs.txt", pairs);
+  writeLoopPairs(dir + "/loop_pairs.txt", pairs, overwrite);
 
   SequenceStats stats;
   stats.frames = n;
@@ -183,8 +185,8 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
         std::vector<const SimScan*> merged;
         for (int j = sim.firstScan(i); j <= i; ++j) merged.push_back(&scans.at(j));
         const SimFrame f = sim.merge(i, merged);
-        io::writeKittiBin(dir + "/velodyne/" + frameName(i) + ".bin", f.points, f.intensity);
-        io::writeLabelFile(dir + "/labels/" + frameName(i) + ".label", f.labels);
+        io::writeKittiBin(dir + "/velodyne/" + frameName(i) + ".bin", f.points, f.intensity, overwrite);
+        io::writeLabelFile(dir + "/labels/" + frameName(i) + ".label", f.labels, overwrite);
         slot.points = static_cast<uint32_t>(f.points.size());
         for (uint32_t w : f.labels) ++slot.classes[static_cast<uint16_t>(w & 0xFFFF)];
         if (options.node_stats_every > 0 && i % options.node_stats_every == 0) {
@@ -218,8 +220,9 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
     const int preview = by_nodes.empty() ? n / 2 : by_nodes[by_nodes.size() / 2].second;
     writeScanPreview(dir + "/preview_scan.png", sim.frame(preview),
                      "frame " + frameName(preview) + " (" + sceneName(sim.config().scene) + ", " +
-                         sensorName(sim.config().sensor.kind) + "), coloured by label");
-    writeTrajectoryPreview(dir + "/preview_trajectory.png", sim, lidar, pairs);
+                         sensorName(sim.config().sensor.kind) + "), coloured by label",
+                     overwrite);
+    writeTrajectoryPreview(dir + "/preview_trajectory.png", sim, lidar, pairs, overwrite);
   }
   return stats;
 }

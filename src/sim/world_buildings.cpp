@@ -32,10 +32,11 @@ bool addBuilding(WorldBuilder& b, Rng& rng, const Lot& lot, double setback) {
   const uint32_t object = b.addObject(ObjectKind::kBuilding);
   const float refl = static_cast<float>(rng.uniform(0.25, 0.55));
   auto box = [&](const Footprint& f, double z0, double top) {
-    Primitive& prim = b.add(makeBox(f.centre.cast<float>(), static_cast<float>(z0), static_cast<float>(f.length),
-                                    static_cast<float>(f.width), static_cast<float>(top - z0),
-                                    static_cast<float>(f.yaw), semantic::kBuilding, object));
+    Primitive prim = makeBox(f.centre.cast<float>(), static_cast<float>(z0), static_cast<float>(f.length),
+                             static_cast<float>(f.width), static_cast<float>(top - z0), static_cast<float>(f.yaw),
+                             semantic::kBuilding, object);
     prim.reflectivity = refl;
+    b.add(prim);
   };
   const double z0 = b.lowestGround(main) - 1.0;  // sunk into the slope: no gap under the walls
   const double ground = b.groundZ(main.centre);

@@ -9,21 +9,21 @@ namespace {
 
 constexpr ZoneMask kKerbside = zoneBit(Zone::kSidewalk) | zoneBit(Zone::kVerge) | kPrivateLand;
 
-Primitive& pole(WorldBuilder& b, const Eigen::Vector2d& xy, double radius, double height, uint32_t object) {
-  Primitive& p = b.add(makeCylinder(xy.cast<float>(), static_cast<float>(b.groundZ(xy) - 0.3),
-                                    static_cast<float>(radius), static_cast<float>(height + 0.3), semantic::kPole,
-                                    object));
-  p.reflectivity = 0.4f;
-  return p;
+void pole(WorldBuilder& b, const Eigen::Vector2d& xy, double radius, double height, uint32_t object,
+          float reflectivity = 0.4f) {
+  Primitive p = makeCylinder(xy.cast<float>(), static_cast<float>(b.groundZ(xy) - 0.3), static_cast<float>(radius),
+                             static_cast<float>(height + 0.3), semantic::kPole, object);
+  p.reflectivity = reflectivity;
+  b.add(p);
 }
 
 /// A plate (thin box) of label @p label facing along @p yaw, centred at height @p z above the ground at xy.
 void plate(WorldBuilder& b, const Eigen::Vector2d& xy, double z, double width, double height, double yaw,
            uint16_t label, uint32_t object, float reflectivity) {
-  Primitive& p = b.add(makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy) + z - 0.5 * height), 0.05f,
-                               static_cast<float>(width), static_cast<float>(height), static_cast<float>(yaw), label,
-                               object));
+  Primitive p = makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy) + z - 0.5 * height), 0.05f,
+                        static_cast<float>(width), static_cast<float>(height), static_cast<float>(yaw), label, object);
   p.reflectivity = reflectivity;
+  b.add(p);
 }
 
 /// Street light: pole, arm over the road and lamp head (all "pole" in SemanticKITTI).
@@ -82,10 +82,12 @@ void smallObject(WorldBuilder& b, Rng& rng, const RoadEdge& e, double s, int sid
   b.occupyCircle(xy, 0.5);
   const uint32_t object = b.addObject(ObjectKind::kOther);
   const double yaw = e.headingAt(s);
-  b.add(makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy)), static_cast<float>(rng.uniform(0.5, 1.6)),
-                static_cast<float>(rng.uniform(0.4, 0.7)), static_cast<float>(rng.uniform(0.8, 1.2)),
-                static_cast<float>(yaw), semantic::kOtherObject, object))
-      .reflectivity = 0.3f;
+  Primitive box = makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy)),
+                          static_cast<float>(rng.uniform(0.5, 1.6)), static_cast<float>(rng.uniform(0.4, 0.7)),
+                          static_cast<float>(rng.uniform(0.8, 1.2)), static_cast<float>(yaw), semantic::kOtherObject,
+                          object);
+  box.reflectivity = 0.3f;
+  b.add(box);
 }
 
 }  // namespace
@@ -115,7 +117,7 @@ void placeStreetFurniture(WorldBuilder& b) {
         const Eigen::Vector2d xy = e.sidePoint(s, off);
         if (!b.fitsCircle(xy, 0.3, kKerbside)) continue;
         b.occupyCircle(xy, 0.5);
-        pole(b, xy, 0.13, rng.uniform(8.0, 10.0), b.addObject(ObjectKind::kPole)).reflectivity = 0.3f;
+        pole(b, xy, 0.13, rng.uniform(8.0, 10.0), b.addObject(ObjectKind::kPole), 0.3f);
       }
     }
     // Approaches to both intersections: a sign (or a traffic light where an avenue is involved).

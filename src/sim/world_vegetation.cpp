@@ -31,11 +31,12 @@ void addCrown(WorldBuilder& b, Rng& rng, const Eigen::Vector3f& centre, const Ei
       c += Eigen::Vector3f(std::cos(a), std::sin(a), rng.uniform(-0.3, 0.3)).cwiseProduct(0.45f * radii);
       r *= static_cast<float>(rng.uniform(0.55, 0.8));
     }
-    Primitive& p = b.add(makeEllipsoid(c, r, semantic::kVegetation, object));
+    Primitive p = makeEllipsoid(c, r, semantic::kVegetation, object);
     p.mean_free_path = static_cast<float>(rng.uniform(0.45, 0.9));
     p.reflectivity = static_cast<float>(rng.uniform(0.3, 0.45));
     p.t_begin = t_begin;
     p.t_end = t_end;
+    b.add(p);
   }
 }
 
@@ -79,11 +80,11 @@ void addTree(WorldBuilder& b, Rng& rng, const Eigen::Vector2d& xy, double scale,
   const Eigen::Vector3f centre(static_cast<float>(xy.x()), static_cast<float>(xy.y()),
                                static_cast<float>(ground + crown_base + r.z()));
   const bool felled = std::isfinite(change_time) && rng.chance(0.3);
-  Primitive& trunk = b.add(makeCylinder(xy.cast<float>(), static_cast<float>(ground - 0.3),
-                                        static_cast<float>(trunk_r),
-                                        static_cast<float>(crown_base + r.z() + 0.3), semantic::kTrunk, object));
+  Primitive trunk = makeCylinder(xy.cast<float>(), static_cast<float>(ground - 0.3), static_cast<float>(trunk_r),
+                                 static_cast<float>(crown_base + r.z() + 0.3), semantic::kTrunk, object);
   trunk.reflectivity = static_cast<float>(rng.uniform(0.25, 0.4));
   if (felled) trunk.t_end = change_time;
+  b.add(trunk);
   addCrown(b, rng, centre, r, object, -kInf, change_time);
   if (std::isfinite(change_time) && !felled) {
     // Cut back: a smaller, higher crown from the change on.
@@ -101,43 +102,50 @@ void addBush(WorldBuilder& b, Rng& rng, const Eigen::Vector2d& xy, double radius
     Eigen::Vector2d c = xy;
     if (k > 0) c += r * Eigen::Vector2d(rng.uniform(-1, 1), rng.uniform(-1, 1));
     const double h = r * rng.uniform(0.6, 1.0);
-    Primitive& p = b.add(makeEllipsoid(Eigen::Vector3f(c.x(), c.y(), ground + 0.6 * h),
-                                       Eigen::Vector3f(r, r * rng.uniform(0.8, 1.2), h).cast<float>(),
-                                       semantic::kVegetation, object));
+    Primitive p = makeEllipsoid(Eigen::Vector3f(c.x(), c.y(), ground + 0.6 * h),
+                                Eigen::Vector3f(r, r * rng.uniform(0.8, 1.2), h).cast<float>(), semantic::kVegetation,
+                                object);
     p.mean_free_path = 0.3f;
     p.reflectivity = static_cast<float>(rng.uniform(0.3, 0.45));
     p.t_end = change_time;  // removed at the change (kInf: never)
+    b.add(p);
   }
 }
 
 void addHedge(WorldBuilder& b, Rng& rng, const Eigen::Vector2d& a, const Eigen::Vector2d& c, float change_time) {
   const uint32_t object = b.addObject(ObjectKind::kHedge);
   const double thick = rng.uniform(0.6, 1.1), height = rng.uniform(0.9, 2.2);
-  Primitive& p = b.add(segmentBox(b, a, c, thick, height, semantic::kVegetation, object));
+  Primitive p = segmentBox(b, a, c, thick, height, semantic::kVegetation, object);
   p.mean_free_path = 0.3f;
   p.reflectivity = static_cast<float>(rng.uniform(0.3, 0.45));
+  if (std::isfinite(change_time)) p.t_end = change_time;
+  b.add(p);
   if (std::isfinite(change_time)) {
     // Trimmed lower and thinner from the change on.
-    p.t_end = change_time;
-    Primitive& q = b.add(segmentBox(b, a, c, 0.8 * thick, std::max(0.6, height - 0.6), semantic::kVegetation, object));
+    Primitive q = segmentBox(b, a, c, 0.8 * thick, std::max(0.6, height - 0.6), semantic::kVegetation, object);
     q.mean_free_path = 0.3f;
     q.reflectivity = p.reflectivity;
     q.t_begin = change_time;
+    b.add(q);
   }
 }
 
 void addFence(WorldBuilder& b, Rng& rng, const Eigen::Vector2d& a, const Eigen::Vector2d& c) {
   const uint32_t object = b.addObject(ObjectKind::kFence);
   const double kind = rng.uniform();
+  Primitive p;
   if (kind < 0.45) {  // see-through metal or lattice fence
-    Primitive& p = b.add(segmentBox(b, a, c, 0.06, rng.uniform(1.0, 1.8), semantic::kFence, object));
+    p = segmentBox(b, a, c, 0.06, rng.uniform(1.0, 1.8), semantic::kFence, object);
     p.mean_free_path = 0.1f;
     p.reflectivity = 0.45f;
   } else if (kind < 0.75) {  // board fence
-    b.add(segmentBox(b, a, c, 0.05, rng.uniform(1.2, 1.9), semantic::kFence, object)).reflectivity = 0.3f;
+    p = segmentBox(b, a, c, 0.05, rng.uniform(1.2, 1.9), semantic::kFence, object);
+    p.reflectivity = 0.3f;
   } else {  // low wall
-    b.add(segmentBox(b, a, c, 0.25, rng.uniform(0.5, 1.2), semantic::kFence, object)).reflectivity = 0.4f;
+    p = segmentBox(b, a, c, 0.25, rng.uniform(0.5, 1.2), semantic::kFence, object);
+    p.reflectivity = 0.4f;
   }
+  b.add(p);
 }
 
 void placeStreetVegetation(WorldBuilder& b) {

@@ -20,7 +20,8 @@ struct LoopPairLabel {
 };
 
 /// Reads `query candidate label` lines (frame numbers, label 1 = loop, 0 = not); `#` comments and blank lines
-/// are skipped. Throws sgtllc::Error naming the file and line for a malformed line.
+/// are skipped. Throws sgtllc::Error naming the file and line for a malformed line (the line is echoed through
+/// io::quoteContent), and naming the file for a list without any pair (an empty list is almost always the wrong file).
 std::vector<LoopPairLabel> readPairList(const std::string& path);
 
 struct PairRecord {

@@ -9,6 +9,7 @@
 
 #include "sgtllc/eval/pair_eval.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/io/output_file.h"
 
 namespace sgtllc::eval {
 
@@ -37,12 +38,20 @@ Json sequenceMetricsJson(const SequenceMetrics& m);
 /// @p list_limit pairs, every pair's result.
 Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_t list_limit = 100);
 
+/// Every file writeSequenceReport() writes into @p dir, report.md last.
+std::vector<std::string> sequenceReportFiles(const std::string& dir);
+/// Every file writePairListReport() writes into @p dir, report.md last.
+std::vector<std::string> pairListReportFiles(const std::string& dir);
+
 /// Writes report.md, metrics.json, pr_curve.csv, frames.csv, candidates.csv and pr_curves.png, timing.png,
-/// memory.png, trajectory.png into @p dir (created if needed). Throws sgtllc::Error naming a file that cannot be written.
+/// memory.png, trajectory.png into @p dir (created if needed). Throws sgtllc::Error naming a file that cannot be
+/// written. With Overwrite::kRefuse it checks that none of them exists before writing any, and each file's final
+/// rename refuses one that appeared meanwhile (io/output_file.h).
 void writeSequenceReport(const std::string& dir, const SequenceRun& run, const SequenceMetrics& m,
-                         const EvalOptions& options, const ReportInfo& info, const ReportExtra& extra = {});
-/// Writes report.md, metrics.json, pr_curve.csv, pairs.csv and pr_curves.png into @p dir.
+                         const EvalOptions& options, const ReportInfo& info, const ReportExtra& extra = {},
+                         io::Overwrite overwrite = io::Overwrite::kReplace);
+/// Writes report.md, metrics.json, pr_curve.csv, pairs.csv and pr_curves.png into @p dir, as writeSequenceReport().
 void writePairListReport(const std::string& dir, const PairListRun& run, const PairListMetrics& m,
-                         const ReportInfo& info);
+                         const ReportInfo& info, io::Overwrite overwrite = io::Overwrite::kReplace);
 
 }  // namespace sgtllc::eval

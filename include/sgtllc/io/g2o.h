@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "sgtllc/backend/pose_graph_types.h"
+#include "sgtllc/io/output_file.h"
 
 namespace sgtllc::io {
 
@@ -36,8 +37,10 @@ std::string g2oEdgesText(const std::vector<backend::Edge>& edges);
 
 /// Writes g2oText / g2oEdgesText atomically (temporary file + rename). Replaces an existing file: deciding whether
 /// that is allowed (--force) is the caller's job. Throws sgtllc::Error `cannot write PATH: REASON`.
-void writeG2o(const std::string& path, const backend::PoseGraph& graph);
-void writeG2oEdges(const std::string& path, const std::vector<backend::Edge>& edges);
+void writeG2o(const std::string& path, const backend::PoseGraph& graph,
+              Overwrite overwrite = Overwrite::kReplace);
+void writeG2oEdges(const std::string& path, const std::vector<backend::Edge>& edges,
+                   Overwrite overwrite = Overwrite::kReplace);
 
 /// Reads a g2o file of VERTEX_SE3:QUAT, EDGE_SE3:QUAT and FIX lines (empty and `#` lines are skipped). Vertex ids
 /// must be 0..N−1, each once (in any order); edges must join two of them, unless the file has no vertices at all

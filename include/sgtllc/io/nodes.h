@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sgtllc/labels.h"
+#include "sgtllc/io/output_file.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -38,6 +39,7 @@ std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, 
 /// written as the shortest text that reads back to the same double (std::to_chars), so the round trip is exact.
 /// Throws sgtllc::Error naming the file, before creating it, if a label is outside 0..6 or a coordinate is not
 /// finite; and if the file cannot be written.
-void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes);
+/// With Overwrite::kRefuse an existing file is kept and the call throws (output_file.h).
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite = Overwrite::kReplace);
 
 }  // namespace sgtllc::io

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sgtllc/io/output_file.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -32,6 +33,7 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field = "
 /// Writes nodes as an ascii PCD v0.7 with fields x y z (F4) and label (U4, the stable class index 0..6), readable by
 /// PCL as pcl::PointXYZL. Coordinates are written as the shortest text that reads back to the same float.
 /// Throws sgtllc::Error naming the file if a label is outside 0..6 or the file cannot be written.
-void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes);
+/// With Overwrite::kRefuse an existing file is kept and the call throws (output_file.h).
+void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite = Overwrite::kReplace);
 
 }  // namespace sgtllc::io

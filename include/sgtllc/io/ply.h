@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "sgtllc/io/output_file.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -28,6 +29,8 @@ struct PlyEdge {
 /// (int vertex1 vertex2, uchar red green blue). Vertex colours come from classColor(label).
 /// Throws sgtllc::Error naming the file, before creating it, if a node label is outside 0..6 or an edge index is
 /// outside [0, nodes.size()); and if the file cannot be written.
-void writeGraphPly(const std::string& path, const std::vector<Node>& nodes, const std::vector<PlyEdge>& edges);
+/// With Overwrite::kRefuse an existing file is kept and the call throws (output_file.h).
+void writeGraphPly(const std::string& path, const std::vector<Node>& nodes, const std::vector<PlyEdge>& edges,
+                   Overwrite overwrite = Overwrite::kReplace);
 
 }  // namespace sgtllc::io

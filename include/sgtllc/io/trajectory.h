@@ -19,6 +19,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "sgtllc/io/output_file.h"
+
 namespace sgtllc::io {
 
 /// The two trajectory formats.
@@ -59,7 +61,8 @@ std::string trajectoryText(const Trajectory& trajectory);
 
 /// Writes trajectoryText(@p trajectory) to @p path via a temporary file and a rename (a failure never leaves half
 /// a file). Replaces an existing file: deciding whether that is allowed (--force) is the caller's job.
-void writeTrajectory(const std::string& path, const Trajectory& trajectory);
+void writeTrajectory(const std::string& path, const Trajectory& trajectory,
+                     Overwrite overwrite = Overwrite::kReplace);
 
 /// @p trajectory with its poses replaced by @p poses (same format, stamps and calib): the corrected trajectory
 /// of an odometry input. Throws sgtllc::Error if the counts differ.

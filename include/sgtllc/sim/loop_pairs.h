@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "sgtllc/io/output_file.h"
+
 namespace sgtllc::sim {
 
 struct LoopPair {
@@ -29,7 +31,8 @@ struct LoopPairOptions {
 /// T_lidar0_lidari (or any common frame).
 std::vector<LoopPair> loopPairs(const std::vector<Eigen::Matrix4d>& lidar_poses, const LoopPairOptions& options);
 
-/// Writes `%06d %06d %d` lines; throws sgtllc::Error `cannot write PATH: REASON`.
-void writeLoopPairs(const std::string& path, const std::vector<LoopPair>& pairs);
+/// Writes `%06d %06d %d` lines (io::writeFileAtomically); throws sgtllc::Error `cannot write PATH: REASON`.
+void writeLoopPairs(const std::string& path, const std::vector<LoopPair>& pairs,
+                    io::Overwrite overwrite = io::Overwrite::kReplace);
 
 }  // namespace sgtllc::sim
