@@ -1,26 +1,35 @@
 # The two commands of the README: `make demo` and `make test`. Both install missing Debian packages first.
 # `make kitti00-loops` / `make kitti00`: loop detection / drift correction on all of KITTI 00 (object frames).
+# The reliability checks (README "Reliability checks"): `make test-sanitize`, `make test-tsan` and `make fuzz`,
+# each a clang build in a directory of its own.
 BUILD ?= build
 JOBS ?= 2
 CMAKE_FLAGS ?=
+DEPS_FLAGS ?=
+FUZZ_SECONDS ?= 60
+FUZZ_HARNESSES ?=
+TARGETS ?=
+# Debug keeps assertions (Eigen's index checks among them); cmake/SgtllcSanitize.cmake then compiles at -O1.
+CLANG_FLAGS = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DSGTLLC_BUILD_BENCH=OFF \
+  -DSGTLLC_BUILD_EXAMPLES=OFF
 SGTLLC = $(BUILD)/apps/sgtllc/sgtllc
 KITTI = data/kitti/00/velodyne
 KITTI00 = $(BUILD)/kitti00
 KITTI00_CONFIG = configs/kitti00-objects.yaml
 
-.PHONY: all deps configure build demo test bench clean kitti00 kitti00-loops
+.PHONY: all deps configure build demo test bench test-sanitize test-tsan fuzz clean kitti00 kitti00-loops
 
 all: build
 
 deps:
-	@./scripts/install-deps.sh
+	@./scripts/install-deps.sh $(DEPS_FLAGS)
 
 configure: deps
 	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) > $(BUILD).configure.log 2>&1 \
 	  || (cat $(BUILD).configure.log; exit 1)
 
 build: configure
-	cmake --build $(BUILD) -j $(JOBS)
+	cmake --build $(BUILD) -j $(JOBS) $(if $(TARGETS),--target $(TARGETS))
 
 demo: build
 	@echo "== KITTI 00: frame 4501 revisits frame 52 (2.96 m apart, ground truth) =="
@@ -56,5 +65,24 @@ bench: build
 	$(BUILD)/bench/sgtllc_bench
 	$(BUILD)/bench/sgtllc_bench_sim
 
+# ASan + UBSan over the whole suite (the tests run the instrumented command-line tool too).
+test-sanitize:
+	@$(MAKE) --no-print-directory build BUILD=build-asan DEPS_FLAGS=--dev \
+	  CMAKE_FLAGS="$(CLANG_FLAGS) -DSGTLLC_SANITIZE=address,undefined $(CMAKE_FLAGS)"
+	@scripts/sanitize/check.sh asan build-asan
+
+# TSan over the threaded paths: the suites that run parallelFor at 2 threads, and run/eval/simulate --threads 2.
+TSAN_TESTS = test_detector test_eval_protocol test_sim_output test_sim_cli test_cli
+test-tsan:
+	@$(MAKE) --no-print-directory build BUILD=build-tsan DEPS_FLAGS=--dev TARGETS="sgtllc_cli $(TSAN_TESTS)" \
+	  CMAKE_FLAGS="$(CLANG_FLAGS) -DSGTLLC_SANITIZE=thread $(CMAKE_FLAGS)"
+	@scripts/sanitize/check.sh tsan build-tsan $(TSAN_TESTS)
+
+# Every libFuzzer harness for FUZZ_SECONDS each (FUZZ_HARNESSES: a subset, e.g. "pcd nodes").
+fuzz:
+	@$(MAKE) --no-print-directory build BUILD=build-fuzz DEPS_FLAGS=--dev TARGETS=sgtllc_fuzz \
+	  CMAKE_FLAGS="$(CLANG_FLAGS) -DSGTLLC_FUZZ=ON -DSGTLLC_BUILD_APPS=OFF -DSGTLLC_BUILD_TESTS=OFF $(CMAKE_FLAGS)"
+	@fuzz/run.sh build-fuzz $(FUZZ_SECONDS) $(FUZZ_HARNESSES)
+
 clean:
-	rm -rf $(BUILD) $(BUILD).configure.log
+	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-tsan build-fuzz build-*.configure.log
