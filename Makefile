@@ -55,11 +55,19 @@ kitti00-loops: build $(KITTI00)/objects.stamp
 	$(SGTLLC) eval $(KITTI00)/seq --nodes $(KITTI00)/objects --config $(KITTI00_CONFIG) --threads $(JOBS) \
 	  --report $(KITTI00)/loop-report --force
 
-# The whole KITTI 00 correction: loops + pose graph over the KISS-ICP odometry (drifting, no loop closure).
+# The whole KITTI 00 correction: loops + pose graph over the KISS-ICP odometry (drifting, no loop closure), then
+# the trajectory errors against SemanticKITTI's poses (report in build/kitti00/report/), and the same back end
+# with 5 % injected false loops (report in build/kitti00/report-false-loops/).
+KITTI00_ODOMETRY = --odometry data/kitti/00/kissicp_00_kitti.txt --calib data/kitti/00/calib.txt
 kitti00: build $(KITTI00)/objects.stamp
-	$(SGTLLC) run --nodes $(KITTI00)/objects --config $(KITTI00_CONFIG) --threads $(JOBS) \
-	  --odometry data/kitti/00/kissicp_00_kitti.txt --calib data/kitti/00/calib.txt \
-	  --out $(KITTI00)/loops.csv --out-trajectory $(KITTI00)/corrected.txt --force
+	$(SGTLLC) run --nodes $(KITTI00)/objects --config $(KITTI00_CONFIG) --threads $(JOBS) $(KITTI00_ODOMETRY) \
+	  --out $(KITTI00)/loops.csv --out-trajectory $(KITTI00)/corrected.txt --out-graph $(KITTI00)/graph.g2o \
+	  --out-loops $(KITTI00)/loops.g2o --force
+	$(SGTLLC) optimize $(KITTI00_ODOMETRY) --loops $(KITTI00)/loops.csv --config $(KITTI00_CONFIG) \
+	  --ground-truth data/kitti/00/poses_semantickitti.txt --report $(KITTI00)/report --force
+	$(SGTLLC) optimize $(KITTI00_ODOMETRY) --loops $(KITTI00)/loops.csv --config $(KITTI00_CONFIG) \
+	  --ground-truth data/kitti/00/poses_semantickitti.txt --add-false-loops 0.05 --seed 7 \
+	  --report $(KITTI00)/report-false-loops --force
 
 bench: build
 	$(BUILD)/bench/sgtllc_bench
