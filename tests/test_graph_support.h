@@ -15,7 +15,7 @@
 
 namespace sgtllc::test {
 
-constexpr int slot(int m, int n) { return kNumClasses * m + n; }
+constexpr int slot(int m, int n) { return kNumPaperClasses * m + n; }
 
 inline Node node(double x, double y, double z, int label) { return Node{Eigen::Vector3d(x, y, z), label}; }
 
@@ -29,7 +29,7 @@ inline std::vector<Node> handNodes() {
 inline std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> xy(0.0, 80.0), z(0.0, 4.0);
-  std::uniform_int_distribution<int> label(0, kNumClasses - 1), grid(0, 40);
+  std::uniform_int_distribution<int> label(0, kNumPaperClasses - 1), grid(0, 40);
   std::vector<Node> nodes(n);
   for (Node& nd : nodes) {
     // Lattice nodes tie often (equal path lengths, distances of exactly σ_d = 30 m).
@@ -44,7 +44,7 @@ inline std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice) {
 struct RefGraph {
   std::vector<std::vector<bool>> adj;
   std::vector<bool> isolated;
-  std::vector<std::array<std::pair<int, int>, kNumSlots>> paths;  ///< (j, k) or (−1, −1)
+  std::vector<std::array<std::pair<int, int>, kNumPaperSlots>> paths;  ///< (j, k) or (−1, −1)
 };
 
 inline double dist(const std::vector<Node>& nodes, int a, int b) { return (nodes[a].centre - nodes[b].centre).norm(); }
@@ -63,8 +63,8 @@ inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool 
   }
   g.paths.resize(n);
   for (int i = 0; i < n; ++i) {
-    for (int m = 0; m < kNumClasses; ++m) {
-      for (int c = 0; c < kNumClasses; ++c) {
+    for (int m = 0; m < kNumPaperClasses; ++m) {
+      for (int c = 0; c < kNumPaperClasses; ++c) {
         std::pair<int, int> best(-1, -1);
         double best_len = -1.0;
         for (int j = 0; j < n; ++j) {

@@ -22,7 +22,7 @@ struct PairOptions {
 
 std::vector<io::PlyEdge> graphEdges(const std::vector<Node>& nodes, const Config& config, int offset) {
   std::vector<io::PlyEdge> edges;
-  const SemanticGraph g = buildGraph(nodes, config.graph);
+  const SemanticGraph g = buildGraph(nodes, config.graph, config.numClasses());
   for (const auto& [p, q] : g.edges()) edges.push_back(io::PlyEdge{p + offset, q + offset, {160, 160, 160}});
   return edges;
 }
@@ -49,10 +49,11 @@ ExportPaths prepareExport(const std::string& dir, bool force) {
 
 void exportGraphs(const ExportPaths& p, const PairResult& r, const Config& config) {
   const auto& [q, m, qm, qn, mn] = p;
-  io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0));
-  io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0));
-  io::writeNodesTxt(qn, r.query_nodes);
-  io::writeNodesTxt(mn, r.match_nodes);
+  const int num_classes = config.numClasses();
+  io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0), num_classes);
+  io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0), num_classes);
+  io::writeNodesTxt(qn, r.query_nodes, config.labels);
+  io::writeNodesTxt(mn, r.match_nodes, config.labels);
 
   std::vector<Node> both = r.match_nodes;
   const int offset = static_cast<int>(both.size());
@@ -68,7 +69,7 @@ void exportGraphs(const ExportPaths& p, const PairResult& r, const Config& confi
     edges.push_back(io::PlyEdge{a.match, offset + a.query,
                                 inlier[k] ? std::array<uint8_t, 3>{0, 200, 0} : std::array<uint8_t, 3>{220, 0, 0}});
   }
-  io::writeGraphPly(qm, both, edges);
+  io::writeGraphPly(qm, both, edges, num_classes);
 }
 
 std::string inputSummary(const FrameNodes& f) {
@@ -96,7 +97,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
             << "\n";
 }
 
-void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
+void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
   const MatchResult& m = r.match;
   Json matches = Json::array();
   std::vector<bool> inlier(m.associations.size(), false);
@@ -105,7 +106,7 @@ void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
     const NodeMatch& a = m.associations[k];
     matches.push_back({{"query_node", a.query},
                        {"match_node", a.match},
-                       {"class", kClassNames[r.query_nodes[a.query].label]},
+                       {"class", config.labels.className(r.query_nodes[a.query].label)},
                        {"similarity", a.similarity},
                        {"inlier", static_cast<bool>(inlier[k])}});
   }
@@ -139,7 +140,7 @@ void runPair(const PairOptions& o) {
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
   const double load_ms = q.load_ms + mt.load_ms;
   if (o.json) {
-    printJson(o, r, load_ms);
+    printJson(o, r, config, load_ms);
   } else {
     printText(o, r, q, mt, config, load_ms);
   }

@@ -13,20 +13,41 @@
 
 namespace sgtllc {
 
-/// Des_i ∈ R^{49×3}: slot α = 7m + n holds the triangle (i, j*, k*) of T_i[m][n] as one entry per vertex: by
-/// default the raw dot products a_i, a_j, a_k (m²), see DescriptorConfig::kind.
-struct LocalDescriptor {
-  LocalDescriptor() {
-    for (Eigen::Vector3f& s : slots) s.setZero();
+/// The set of slots of a local descriptor that hold a triangle: bit α for slot α < kMaxSlots.
+struct SlotMask {
+  static constexpr int kWords = kMaxSlots / 64;
+  std::array<uint64_t, kWords> words{};
+
+  SlotMask() = default;
+  /// The mask whose first 64 slots are the bits of @p first (all the slots of the paper's seven classes).
+  SlotMask(uint64_t first) { words[0] = first; }  // NOLINT: implicit, so that a 49-slot mask reads as one word
+
+  void set(int alpha) { words[static_cast<size_t>(alpha >> 6)] |= uint64_t{1} << (alpha & 63); }
+  bool test(int alpha) const { return (words[static_cast<size_t>(alpha >> 6)] >> (alpha & 63)) & 1u; }
+  int count() const;
+  SlotMask& operator|=(const SlotMask& o) {
+    for (int w = 0; w < kWords; ++w) words[w] |= o.words[w];
+    return *this;
   }
+  friend bool operator==(const SlotMask& a, const SlotMask& b) { return a.words == b.words; }
+  friend bool operator!=(const SlotMask& a, const SlotMask& b) { return !(a == b); }
+};
 
-  std::array<Eigen::Vector3f, kNumSlots> slots;  ///< zero where the slot is empty
-  uint64_t valid = 0;                            ///< bit α set iff slot α holds a triangle
+/// Des_i ∈ R^{C²×3} (49×3 = 147 values with the paper's seven classes): slot α = C·m + n holds the triangle
+/// (i, j*, k*) of T_i[m][n] as one entry per vertex: by default the raw dot products a_i, a_j, a_k (m²), see
+/// DescriptorConfig::kind.
+struct LocalDescriptor {
+  /// An empty descriptor of @p num_slots = C² slots.
+  explicit LocalDescriptor(int num_slots = kNumPaperSlots) : slots(static_cast<size_t>(num_slots), Eigen::Vector3f::Zero()) {}
 
-  bool isValid(int alpha) const { return (valid >> alpha) & 1u; }
-  int numValid() const;
-  /// The 147 values in slot-major order (α, then entry), as the paper's Des_i.
-  std::array<float, 3 * kNumSlots> flat() const;
+  std::vector<Eigen::Vector3f> slots;  ///< C² entries, zero where the slot is empty
+  SlotMask valid;                      ///< bit α set iff slot α holds a triangle
+
+  int numSlots() const { return static_cast<int>(slots.size()); }
+  bool isValid(int alpha) const { return valid.test(alpha); }
+  int numValid() const { return valid.count(); }
+  /// The 3·C² values in slot-major order (α, then entry), as the paper's Des_i.
+  std::vector<float> flat() const;
 };
 
 /// The vertex-rooted products of a triangle: a_i = (p_j − p_i)·(p_k − p_i), and likewise a_j, a_k (spec §4).

@@ -33,11 +33,11 @@ void writeFile(const std::string& path, std::string_view content) {
   if (!written || std::fclose(file.release()) != 0) throw Error("cannot write " + path + ": " + std::strerror(errno));
 }
 
-void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes) {
+void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes, int num_classes) {
   for (size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {
+    if (nodes[i].label < 0 || nodes[i].label >= num_classes) {
       throw Error("cannot write " + path + ": node " + std::to_string(i) + " has label " +
-                  std::to_string(nodes[i].label) + ", not a stable class index 0.." + std::to_string(kNumClasses - 1));
+                  std::to_string(nodes[i].label) + ", not a stable class index 0.." + std::to_string(num_classes - 1));
     }
   }
 }

@@ -45,9 +45,9 @@ std::string readWholeFile(const std::string& path);
 /// Creates or replaces @p path with @p content. Throws `cannot write PATH: REASON`.
 void writeFile(const std::string& path, std::string_view content);
 
-/// Throws `cannot write PATH: node I has label L, not a stable class index 0..6` for the first node whose label is
-/// not a stable class index. Writers call it before creating the file.
-void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes);
+/// Throws `cannot write PATH: node I has label L, not a stable class index 0..C−1` (C = @p num_classes) for the
+/// first node whose label is not a stable class index. Writers call it before creating the file.
+void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes, int num_classes);
 
 /// Next line of @p text starting at @p pos (without its '\n'); advances @p pos past the newline.
 std::string_view nextLine(std::string_view text, size_t& pos);

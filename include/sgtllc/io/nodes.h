@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sgtllc/config.h"
 #include "sgtllc/labels.h"
 #include "sgtllc/types.h"
 
@@ -34,10 +35,13 @@ std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, 
 
 /// Writes one row per node after a comment line `# x y z label (SemanticKITTI raw id)`. The label is written as
 /// the SemanticKITTI raw id of the node's class (building 50, fence 51, vegetation 70, trunk 71, terrain 72,
-/// pole 80, traffic-sign 81), so readNodesTxt with the default LabelMap reads the nodes back; coordinates are
-/// written as the shortest text that reads back to the same double (std::to_chars), so the round trip is exact.
-/// Throws sgtllc::Error naming the file, before creating it, if a label is outside 0..6 or a coordinate is not
-/// finite; and if the file cannot be written.
-void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes);
+/// pole 80, traffic-sign 81) and, for an extra class of @p labels, as its first id in ExtraClass::ids (with
+/// preset custom and no ids: the lowest custom_map id of the class), so readNodesTxt with LabelMap(@p labels)
+/// (the SemanticKITTI preset) reads the nodes back; coordinates are written as the shortest text that reads back
+/// to the same double (std::to_chars), so the round trip is exact.
+/// Throws sgtllc::Error naming the file, before creating it, if a label is outside 0..C−1 (C =
+/// labels.numClasses()), an extra class has no id, or a coordinate is not finite; and if the file cannot be
+/// written.
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, const LabelConfig& labels = {});
 
 }  // namespace sgtllc::io
