@@ -95,12 +95,12 @@ void validateExtraClasses(const LabelConfig& labels) {
       if (!fresh) {
         throw ConfigError(key + ".ids", at + " is mapped twice: already to '" + extras[it->second].name + "'");
       }
+      if (labels.preset == LabelPreset::kCustom && labels.custom_map.count(id)) {
+        throw ConfigError(key + ".ids", at + " is mapped twice: labels.custom_map lists it");
+      }
       if (preset.classOf(id) != kDropped) {
         throw ConfigError(key + ".ids", at + " is mapped twice: the preset maps it to '" +
                                             labels.className(preset.classOf(id)) + "'");
-      }
-      if (labels.preset == LabelPreset::kCustom && labels.custom_map.count(id)) {
-        throw ConfigError(key + ".ids", at + " is mapped twice: labels.custom_map lists it");
       }
     }
   }
