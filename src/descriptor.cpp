@@ -13,7 +13,7 @@ int SlotMask::count() const {
 }
 
 std::vector<float> LocalDescriptor::flat() const {
-  std::vector<float> out(3 * slots.size());
+  std::vector<float> out(3 * static_cast<size_t>(slots.size()));
   for (int a = 0; a < numSlots(); ++a) {
     for (int e = 0; e < 3; ++e) out[3 * a + e] = slots[a][e];
   }
@@ -46,6 +46,7 @@ std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph,
   std::vector<LocalDescriptor> out(static_cast<size_t>(graph.size()), LocalDescriptor(num_slots));
   for (int i = 0; i < graph.size(); ++i) {
     LocalDescriptor& des = out[i];
+    Eigen::Vector3f* slots = des.slots.data();
     const SlotRow<const TwoStepPath> paths = graph.paths[i];
     for (int a = 0; a < num_slots; ++a) {
       const TwoStepPath& path = paths[a];
@@ -54,7 +55,7 @@ std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph,
       if (!path.exists() || path.k == i) continue;
       const Eigen::Vector3d e = vertexEntries(
           triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre), config.kind);
-      des.slots[a] = (config.order == SubVectorOrder::kPaper ? e : Eigen::Vector3d(e[0], e[2], -e[1])).cast<float>();
+      slots[a] = (config.order == SubVectorOrder::kPaper ? e : Eigen::Vector3d(e[0], e[2], -e[1])).cast<float>();
       des.valid.set(a);
     }
   }

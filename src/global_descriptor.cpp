@@ -33,31 +33,31 @@ std::vector<float> computeGlobalDescriptor(const SemanticGraph& graph, const Des
   for (int i = 0; i < graph.size(); ++i) {
     const int o = graph.nodes[i].label;
     const SlotRow<const TwoStepPath> paths = graph.paths[i];
-    for (int a = 0; a < num_slots; ++a) {
-      const TwoStepPath& path = paths[a];
-      if (!path.exists() || path.k == i) continue;  // the slots a local descriptor holds (descriptor.cpp)
-      const Eigen::Vector3d t =
-          triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
-      const int m = a / num_classes;
-      const int n = a % num_classes;
-      const int fuzzy_cell = 2 * num_classes * o + num_classes * fuzzyGroup(m) + n;
-      double value = 0.0;
-      int cell = 0;
-      switch (config.global_mode) {
-        case GlobalMode::kG1:
-          value = t[2];  // a_k
-          cell = fuzzy_cell;
-          break;
-        case GlobalMode::kG2:
-          value = oneMinusCosAtK(t);
-          cell = num_slots * o + a;
-          break;
-        case GlobalMode::kG3:
-          value = oneMinusCosAtK(t);
-          cell = fuzzy_cell;
-          break;
+    for (int m = 0, a = 0; m < num_classes; ++m) {
+      const int fuzzy_row = 2 * num_classes * o + num_classes * fuzzyGroup(m);
+      for (int n = 0; n < num_classes; ++n, ++a) {  // a = C·m + n
+        const TwoStepPath& path = paths[a];
+        if (!path.exists() || path.k == i) continue;  // the slots a local descriptor holds (descriptor.cpp)
+        const Eigen::Vector3d t =
+            triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
+        double value = 0.0;
+        int cell = 0;
+        switch (config.global_mode) {
+          case GlobalMode::kG1:
+            value = t[2];  // a_k
+            cell = fuzzy_row + n;
+            break;
+          case GlobalMode::kG2:
+            value = oneMinusCosAtK(t);
+            cell = num_slots * o + a;
+            break;
+          case GlobalMode::kG3:
+            value = oneMinusCosAtK(t);
+            cell = fuzzy_row + n;
+            break;
+        }
+        des[cell] = std::max(des[cell], static_cast<float>(value));
       }
-      des[cell] = std::max(des[cell], static_cast<float>(value));
     }
   }
   return des;

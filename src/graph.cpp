@@ -1,6 +1,7 @@
 #include "sgtllc/graph.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 namespace sgtllc {
@@ -11,6 +12,35 @@ struct FarthestTwo {
   int first = -1;
   int second = -1;
 };
+
+/// T_i[m][n] for every node i from the two farthest neighbours of each node and class (spec §3). kClasses is the
+/// class count when fixed at compile time, 0 to use @p num_classes.
+template <int kClasses>
+void longestPaths(SemanticGraph& g, const SlotRows<FarthestTwo>& far, bool allow_k_equals_i, int num_classes) {
+  const int classes = kClasses > 0 ? kClasses : num_classes;
+  const int n = g.size();
+  std::array<double, kMaxSlots> best_length;
+  for (int i = 0; i < n; ++i) {
+    std::fill(best_length.begin(), best_length.begin() + classes * classes, -1.0);
+    const SlotRow<TwoStepPath> paths = g.paths[i];
+    for (int j = 0; j < n; ++j) {
+      if (!g.adjacent(i, j)) continue;
+      const int m = g.nodes[j].label;
+      const SlotRow<const FarthestTwo> far_j = far[j];
+      for (int c = 0; c < classes; ++c) {
+        int k = far_j[c].first;
+        if (k == i && !allow_k_equals_i) k = far_j[c].second;
+        if (k < 0) continue;
+        const double length = g.distance(i, j) + g.distance(j, k);
+        const int alpha = classes * m + c;
+        if (length > best_length[alpha]) {  // strict: the first path found (lowest j) keeps a tie
+          best_length[alpha] = length;
+          paths[alpha] = TwoStepPath{j, k};
+        }
+      }
+    }
+  }
+}
 
 }  // namespace
 
@@ -84,26 +114,11 @@ SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config, int
   }
 
   g.paths.assign(n, num_slots, TwoStepPath{});
-  std::vector<double> best_length(num_slots);
-  for (int i = 0; i < n; ++i) {
-    std::fill(best_length.begin(), best_length.end(), -1.0);
-    const SlotRow<TwoStepPath> paths = g.paths[i];
-    for (int j = 0; j < n; ++j) {
-      if (!g.adjacent(i, j)) continue;
-      const int m = g.nodes[j].label;
-      const SlotRow<FarthestTwo> far_j = far[j];
-      for (int c = 0; c < num_classes; ++c) {
-        int k = far_j[c].first;
-        if (k == i && !config.allow_k_equals_i) k = far_j[c].second;
-        if (k < 0) continue;
-        const double length = g.distance(i, j) + g.distance(j, k);
-        const int alpha = num_classes * m + c;
-        if (length > best_length[alpha]) {  // strict: the first path found (lowest j) keeps a tie
-          best_length[alpha] = length;
-          paths[alpha] = TwoStepPath{j, k};
-        }
-      }
-    }
+  // The paper's seven classes get a loop the compiler unrolls (the default must not pay for the runtime count).
+  if (num_classes == kNumPaperClasses) {
+    longestPaths<kNumPaperClasses>(g, far, config.allow_k_equals_i, num_classes);
+  } else {
+    longestPaths<0>(g, far, config.allow_k_equals_i, num_classes);
   }
   return g;
 }

@@ -33,17 +33,45 @@ struct SlotMask {
   friend bool operator!=(const SlotMask& a, const SlotMask& b) { return !(a == b); }
 };
 
+/// The C² slot sub-vectors of one local descriptor, zero-initialised. Up to 49 slots (the paper's seven classes)
+/// live inline, so that describing a default frame allocates nothing per node; larger class sets use the heap.
+class SlotArray {
+ public:
+  explicit SlotArray(int size) : size_(size) {
+    if (size > kNumPaperSlots) {
+      heap_.assign(static_cast<size_t>(size), Eigen::Vector3f::Zero());
+    } else {
+      for (Eigen::Vector3f& v : inline_) v.setZero();
+    }
+  }
+
+  int size() const { return size_; }
+  Eigen::Vector3f* data() { return size_ > kNumPaperSlots ? heap_.data() : inline_.data(); }
+  const Eigen::Vector3f* data() const { return size_ > kNumPaperSlots ? heap_.data() : inline_.data(); }
+  Eigen::Vector3f& operator[](int a) { return data()[a]; }
+  const Eigen::Vector3f& operator[](int a) const { return data()[a]; }
+  Eigen::Vector3f* begin() { return data(); }
+  Eigen::Vector3f* end() { return data() + size_; }
+  const Eigen::Vector3f* begin() const { return data(); }
+  const Eigen::Vector3f* end() const { return data() + size_; }
+
+ private:
+  std::array<Eigen::Vector3f, kNumPaperSlots> inline_;
+  std::vector<Eigen::Vector3f> heap_;
+  int size_;
+};
+
 /// Des_i ∈ R^{C²×3} (49×3 = 147 values with the paper's seven classes): slot α = C·m + n holds the triangle
 /// (i, j*, k*) of T_i[m][n] as one entry per vertex: by default the raw dot products a_i, a_j, a_k (m²), see
 /// DescriptorConfig::kind.
 struct LocalDescriptor {
   /// An empty descriptor of @p num_slots = C² slots.
-  explicit LocalDescriptor(int num_slots = kNumPaperSlots) : slots(static_cast<size_t>(num_slots), Eigen::Vector3f::Zero()) {}
+  explicit LocalDescriptor(int num_slots = kNumPaperSlots) : slots(num_slots) {}
 
-  std::vector<Eigen::Vector3f> slots;  ///< C² entries, zero where the slot is empty
-  SlotMask valid;                      ///< bit α set iff slot α holds a triangle
+  SlotArray slots;  ///< C² entries, zero where the slot is empty
+  SlotMask valid;   ///< bit α set iff slot α holds a triangle
 
-  int numSlots() const { return static_cast<int>(slots.size()); }
+  int numSlots() const { return slots.size(); }
   bool isValid(int alpha) const { return valid.test(alpha); }
   int numValid() const { return valid.count(); }
   /// The 3·C² values in slot-major order (α, then entry), as the paper's Des_i.
