@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   io::NodeFileStats stats;
   if (!fuzz::readsOrRejects([&] { nodes = io::readNodesTxt(file.path(), labels, &stats); })) return 0;
   fuzz::require(nodes.size() + stats.dropped_known + stats.unknown == stats.rows, "every row counted once");
-  for (const Node& n : nodes) fuzz::require(n.label >= 0 && n.label < kNumClasses, "stable class labels");
+  for (const Node& n : nodes) fuzz::require(n.label >= 0 && n.label < kNumPaperClasses, "stable class labels");
 
   // What was read must write and read back unchanged (the writer prints the shortest exact decimal).
   io::writeNodesTxt(copy.path(), nodes);

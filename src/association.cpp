@@ -1,12 +1,17 @@
 #include "sgtllc/association.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sgtllc {
 
 double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match, const AssociationConfig& config,
                       const DescriptorConfig& descriptor) {
-  const int enable = query.numValid();
+  // Only the mask words that hold slots: one for up to 8 classes (64 slots).
+  const int query_words = (query.numSlots() + 63) / 64;
+  const int words = (std::min(query.numSlots(), match.numSlots()) + 63) / 64;
+  int enable = 0;  // query.numValid()
+  for (int w = 0; w < query_words; ++w) enable += __builtin_popcountll(query.valid.words[w]);
   if (enable == 0) return 0.0;
   // Entries compared (Table IV ablation drops one), in storage order.
   Eigen::Vector3f keep = Eigen::Vector3f::Zero();
@@ -21,13 +26,17 @@ double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match
   const float max_delta = static_cast<float>(config.max_delta_aj);
   int matches = 0;
   // Both slots must hold a triangle (spec §6 [CHOICE]); the code also matched empty candidate slots via NaN.
-  for (uint64_t both = query.valid & match.valid; both != 0; both &= both - 1) {
-    const int a = __builtin_ctzll(both);
-    const Eigen::Vector3f u = all ? query.slots[a] : query.slots[a].cwiseProduct(keep);
-    const Eigen::Vector3f v = all ? match.slots[a] : match.slots[a].cwiseProduct(keep);
-    if (delta_test && std::abs(u[vj] - v[vj]) >= max_delta) continue;
-    // cos(u, v) > σ_1 without a division; a zero-length sub-vector never matches.
-    if (u.dot(v) > sigma_1 * u.norm() * v.norm()) ++matches;
+  const Eigen::Vector3f* query_slots = query.slots.data();
+  const Eigen::Vector3f* match_slots = match.slots.data();
+  for (int w = 0; w < words; ++w) {
+    for (uint64_t both = query.valid.words[w] & match.valid.words[w]; both != 0; both &= both - 1) {
+      const int a = 64 * w + __builtin_ctzll(both);
+      const Eigen::Vector3f u = all ? query_slots[a] : query_slots[a].cwiseProduct(keep);
+      const Eigen::Vector3f v = all ? match_slots[a] : match_slots[a].cwiseProduct(keep);
+      if (delta_test && std::abs(u[vj] - v[vj]) >= max_delta) continue;
+      // cos(u, v) > σ_1 without a division; a zero-length sub-vector never matches.
+      if (u.dot(v) > sigma_1 * u.norm() * v.norm()) ++matches;
+    }
   }
   return config.score == NodeScore::kRatio ? static_cast<double>(matches) / enable : matches;
 }

@@ -1,20 +1,102 @@
 #include "sgtllc/config.h"
 
+#include <map>
 #include <string>
 
 #include "config_ranges.h"
+#include "sgtllc/labels.h"
 
 namespace sgtllc {
 
 using namespace detail;
 
+namespace {
+
+bool validClassName(const std::string& name) {
+  if (name.empty() || name[0] < 'a' || name[0] > 'z') return false;
+  for (char ch : name) {
+    if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '-' || ch == '_')) return false;
+  }
+  return true;
+}
+
+/// Names unique and new, ids claimed once, the count bounded (LabelConfig::extra_classes).
+void validateExtraClasses(const LabelConfig& labels) {
+  const std::vector<ExtraClass>& extras = labels.extra_classes;
+  if (extras.empty()) return;
+  if (labels.numClasses() > kMaxClasses) {
+    throw ConfigError("labels.extra_classes",
+                      "labels.extra_classes: " + std::to_string(extras.size()) + " extra classes make " +
+                          std::to_string(labels.numClasses()) + " in all, more than " + std::to_string(kMaxClasses) +
+                          " (the G2 global descriptor has C³ entries per frame)");
+  }
+  LabelConfig base = labels;  // the preset's own classes, to find ids an extra class would take from them
+  base.extra_classes.clear();
+  const LabelMap preset(base);
+  std::map<uint32_t, int> owner;  // id → extra class that claimed it
+  for (size_t k = 0; k < extras.size(); ++k) {
+    const std::string key = "labels.extra_classes[" + std::to_string(k) + "]";
+    const std::string& name = extras[k].name;
+    if (!validClassName(name)) {
+      throw ConfigError(key + ".name", key + ".name: '" + name + "' is not a class name (a lower-case letter, then " +
+                                           "letters a-z, digits, '-' or '_')");
+    }
+    for (int c = 0; c < kNumPaperClasses + static_cast<int>(k); ++c) {
+      if (labels.className(c) == name) {
+        throw ConfigError(key + ".name", key + ".name: '" + name + "' is " +
+                                             (c < kNumPaperClasses ? "one of the paper's classes"
+                                                                   : "already the name of class " + std::to_string(c)));
+      }
+    }
+    if (extras[k].ids.empty() && labels.preset != LabelPreset::kCustom) {
+      throw ConfigError(key + ".ids", key + ".ids: class '" + name + "' lists no raw ids");
+    }
+    for (uint32_t id : extras[k].ids) {
+      const std::string at = key + ".ids: id " + std::to_string(id);
+      if (id > 0xFFFFu) throw ConfigError(key + ".ids", at + " is out of range [0, 65535]");
+      const auto [it, fresh] = owner.emplace(id, static_cast<int>(k));
+      if (!fresh) {
+        throw ConfigError(key + ".ids", at + " is mapped twice: already to '" + extras[it->second].name + "'");
+      }
+      if (labels.preset == LabelPreset::kCustom && labels.custom_map.count(id)) {
+        throw ConfigError(key + ".ids", at + " is mapped twice: labels.custom_map lists it");
+      }
+      if (preset.classOf(id) != kDropped) {
+        throw ConfigError(key + ".ids", at + " is mapped twice: the preset maps it to '" +
+                                            labels.className(preset.classOf(id)) + "'");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::string LabelConfig::className(int c) const {
+  if (c >= 0 && c < kNumPaperClasses) return kClassNames[c];
+  if (c >= kNumPaperClasses && c < numClasses()) return extra_classes[c - kNumPaperClasses].name;
+  return "class-" + std::to_string(c);
+}
+
+int Config::addClass(ExtraClass extra, const ClassClusterConfig& params) {
+  labels.extra_classes.push_back(std::move(extra));
+  cluster.classes.push_back(params);
+  return numClasses() - 1;
+}
+
 void Config::validate() const {
   // Ranges are documented field by field in config.h; keep the two in step.
+  validateExtraClasses(labels);
+  const int num_classes = numClasses();
   for (const auto& [id, cls] : labels.custom_map) {
-    checkInt("labels.custom_map[" + std::to_string(id) + "]", cls, -1, kNumClasses - 1);
+    checkInt("labels.custom_map[" + std::to_string(id) + "]", cls, -1, num_classes - 1);
   }
-  for (int c = 0; c < kNumClasses; ++c) {
-    const std::string key = std::string("cluster.") + kClassNames[c];
+  if (static_cast<int>(cluster.classes.size()) != num_classes) {
+    throw ConfigError("cluster", "cluster.classes has " + std::to_string(cluster.classes.size()) +
+                                     " entries for " + std::to_string(num_classes) +
+                                     " classes (one per class; Config::addClass appends both)");
+  }
+  for (int c = 0; c < num_classes; ++c) {
+    const std::string key = "cluster." + labels.className(c);
     const ClassClusterConfig& p = cluster.classes[c];
     // Lower bounds keep voxel cells of points within ±1e6 m inside the exact integer cell range.
     if (p.voxel != 0.0 && !inside(p.voxel, {0.001}, {10.0})) {
@@ -32,11 +114,14 @@ void Config::validate() const {
   checkInt("retrieval.warmup_frames", retrieval.warmup_frames, 0, kMaxFrames);
   checkReal("association.sigma_1", association.sigma_1, {-1.0}, {1.0});
   checkReal("association.max_delta_aj", association.max_delta_aj, {0.0, false}, {1.0e6});
-  // S is a share of slots with score ratio and a count of them (at most kNumSlots = 49) with score count.
+  // S is a share of slots with score ratio and a count of them (at most C² = 49 for the seven classes) with
+  // score count.
   const bool count = association.score == NodeScore::kCount;
-  if (!inside(association.sigma_2, {0.0}, {count ? 49.0 : 1.0})) {
+  const std::string slots = text(static_cast<long long>(num_classes) * num_classes);
+  if (!inside(association.sigma_2, {0.0}, {count ? num_classes * num_classes : 1.0})) {
     outOfRange("association.sigma_2", text(association.sigma_2),
-               count ? "[0, 49] (association.score: count)" : "[0, 1] (association.score: ratio; [0, 49] with count)");
+               count ? "[0, " + slots + "] (association.score: count)"
+                     : "[0, 1] (association.score: ratio; [0, " + slots + "] with count)");
   }
   if (association.entries < 1 || association.entries > 7) {
     throw ConfigError("association.entries", "association.entries must keep at least one of the v_i, v_j, v_k entries");

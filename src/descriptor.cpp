@@ -6,11 +6,15 @@
 
 namespace sgtllc {
 
-int LocalDescriptor::numValid() const { return static_cast<int>(std::bitset<64>(valid).count()); }
+int SlotMask::count() const {
+  int n = 0;
+  for (uint64_t w : words) n += static_cast<int>(std::bitset<64>(w).count());
+  return n;
+}
 
-std::array<float, 3 * kNumSlots> LocalDescriptor::flat() const {
-  std::array<float, 3 * kNumSlots> out{};
-  for (int a = 0; a < kNumSlots; ++a) {
+std::vector<float> LocalDescriptor::flat() const {
+  std::vector<float> out(3 * static_cast<size_t>(slots.size()));
+  for (int a = 0; a < numSlots(); ++a) {
     for (int e = 0; e < 3; ++e) out[3 * a + e] = slots[a][e];
   }
   return out;
@@ -38,18 +42,21 @@ Eigen::Vector3d slotTerms(const Eigen::Vector3f& slot, SubVectorOrder order) {
 }
 
 std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph, const DescriptorConfig& config) {
-  std::vector<LocalDescriptor> out(graph.size());
+  const int num_slots = graph.numSlots();
+  std::vector<LocalDescriptor> out(static_cast<size_t>(graph.size()), LocalDescriptor(num_slots));
   for (int i = 0; i < graph.size(); ++i) {
     LocalDescriptor& des = out[i];
-    for (int a = 0; a < kNumSlots; ++a) {
-      const TwoStepPath& path = graph.paths[i][a];
+    Eigen::Vector3f* slots = des.slots.data();
+    const SlotRow<const TwoStepPath> paths = graph.paths[i];
+    for (int a = 0; a < num_slots; ++a) {
+      const TwoStepPath& path = paths[a];
       // A k = i winner (only with graph.allow_k_equals_i) blocks the slot but is degenerate (a_i = a_k = 0): the
       // authors' code never enables it on the query side (spec §3, §4), so it stays empty here.
       if (!path.exists() || path.k == i) continue;
       const Eigen::Vector3d e = vertexEntries(
           triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre), config.kind);
-      des.slots[a] = (config.order == SubVectorOrder::kPaper ? e : Eigen::Vector3d(e[0], e[2], -e[1])).cast<float>();
-      des.valid |= uint64_t{1} << a;
+      slots[a] = (config.order == SubVectorOrder::kPaper ? e : Eigen::Vector3d(e[0], e[2], -e[1])).cast<float>();
+      des.valid.set(a);
     }
   }
   return out;

@@ -15,13 +15,17 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+const Config& validated(const Config& config) {
+  config.validate();
+  return config;
+}
+
 }  // namespace
 
 LoopDetector::LoopDetector(const Config& config)
-    : config_(config),
+    : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, config.labels, config.graph.max_nodes),
       database_(config.retrieval.method) {
-  config_.validate();
 }
 
 int LoopDetector::firstSearchedFrame() const {
@@ -42,7 +46,8 @@ FrameResult LoopDetector::process(std::vector<Node> nodes) { return processNodes
 FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult result) {
   result.frame = database_.size();
   auto start = Clock::now();
-  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor);
+  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor, /*with_global=*/true,
+                                              config_.numClasses());
   result.num_nodes = query.numNodes();
   result.timing.description_ms = msSince(start);
 
@@ -68,7 +73,8 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
     cand.frame = retrieved[c].frame;
     cand.distance2 = retrieved[c].distance2;
     const DescribedFrame candidate =
-        describeFrame(database_.nodes(cand.frame), config_.graph, config_.descriptor, /*with_global=*/false);
+        describeFrame(database_.nodes(cand.frame), config_.graph, config_.descriptor, /*with_global=*/false,
+                      config_.numClasses());
     cand.match = matchFrames(query, candidate, config_);
   });
   // Highest score_t wins; a tie goes to the later (higher-index) candidate, as the authors' `>=` (spec §7.4).
@@ -102,8 +108,9 @@ PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const C
   config.validate();
   PairResult result;
   auto start = Clock::now();
-  const DescribedFrame q = describeFrame(std::move(query), config.graph, config.descriptor);
-  const DescribedFrame m = describeFrame(std::move(match), config.graph, config.descriptor);
+  const int num_classes = config.numClasses();
+  const DescribedFrame q = describeFrame(std::move(query), config.graph, config.descriptor, true, num_classes);
+  const DescribedFrame m = describeFrame(std::move(match), config.graph, config.descriptor, true, num_classes);
   result.timing.description_ms = msSince(start);
   start = Clock::now();
   result.match = matchFrames(q, m, config);

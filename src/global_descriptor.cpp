@@ -21,39 +21,43 @@ double oneMinusCosAtK(const Eigen::Vector3d& t) {
 
 }  // namespace
 
-int globalDescriptorSize(GlobalMode mode) {
-  return mode == GlobalMode::kG2 ? kNumClasses * kNumSlots : kNumClasses * 2 * kNumClasses;
+int globalDescriptorSize(GlobalMode mode, int num_classes) {
+  const int c = num_classes;
+  return mode == GlobalMode::kG2 ? c * c * c : c * 2 * c;
 }
 
 std::vector<float> computeGlobalDescriptor(const SemanticGraph& graph, const DescriptorConfig& config) {
-  std::vector<float> des(globalDescriptorSize(config.global_mode), 0.0f);
+  const int num_classes = graph.num_classes;
+  const int num_slots = graph.numSlots();
+  std::vector<float> des(globalDescriptorSize(config.global_mode, num_classes), 0.0f);
   for (int i = 0; i < graph.size(); ++i) {
     const int o = graph.nodes[i].label;
-    for (int a = 0; a < kNumSlots; ++a) {
-      const TwoStepPath& path = graph.paths[i][a];
-      if (!path.exists() || path.k == i) continue;  // the slots a local descriptor holds (descriptor.cpp)
-      const Eigen::Vector3d t =
-          triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
-      const int m = a / kNumClasses;
-      const int n = a % kNumClasses;
-      const int fuzzy_cell = 2 * kNumClasses * o + kNumClasses * fuzzyGroup(m) + n;
-      double value = 0.0;
-      int cell = 0;
-      switch (config.global_mode) {
-        case GlobalMode::kG1:
-          value = t[2];  // a_k
-          cell = fuzzy_cell;
-          break;
-        case GlobalMode::kG2:
-          value = oneMinusCosAtK(t);
-          cell = kNumSlots * o + a;
-          break;
-        case GlobalMode::kG3:
-          value = oneMinusCosAtK(t);
-          cell = fuzzy_cell;
-          break;
+    const SlotRow<const TwoStepPath> paths = graph.paths[i];
+    for (int m = 0, a = 0; m < num_classes; ++m) {
+      const int fuzzy_row = 2 * num_classes * o + num_classes * fuzzyGroup(m);
+      for (int n = 0; n < num_classes; ++n, ++a) {  // a = C·m + n
+        const TwoStepPath& path = paths[a];
+        if (!path.exists() || path.k == i) continue;  // the slots a local descriptor holds (descriptor.cpp)
+        const Eigen::Vector3d t =
+            triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre);
+        double value = 0.0;
+        int cell = 0;
+        switch (config.global_mode) {
+          case GlobalMode::kG1:
+            value = t[2];  // a_k
+            cell = fuzzy_row + n;
+            break;
+          case GlobalMode::kG2:
+            value = oneMinusCosAtK(t);
+            cell = num_slots * o + a;
+            break;
+          case GlobalMode::kG3:
+            value = oneMinusCosAtK(t);
+            cell = fuzzy_row + n;
+            break;
+        }
+        des[cell] = std::max(des[cell], static_cast<float>(value));
       }
-      des[cell] = std::max(des[cell], static_cast<float>(value));
     }
   }
   return des;

@@ -1,5 +1,7 @@
 #include "sgtllc/graph.h"
 
+#include <algorithm>
+#include <array>
 #include <string>
 
 namespace sgtllc {
@@ -10,6 +12,35 @@ struct FarthestTwo {
   int first = -1;
   int second = -1;
 };
+
+/// T_i[m][n] for every node i from the two farthest neighbours of each node and class (spec §3). kClasses is the
+/// class count when fixed at compile time, 0 to use @p num_classes.
+template <int kClasses>
+void longestPaths(SemanticGraph& g, const SlotRows<FarthestTwo>& far, bool allow_k_equals_i, int num_classes) {
+  const int classes = kClasses > 0 ? kClasses : num_classes;
+  const int n = g.size();
+  std::array<double, kMaxSlots> best_length;
+  for (int i = 0; i < n; ++i) {
+    std::fill(best_length.begin(), best_length.begin() + classes * classes, -1.0);
+    const SlotRow<TwoStepPath> paths = g.paths[i];
+    for (int j = 0; j < n; ++j) {
+      if (!g.adjacent(i, j)) continue;
+      const int m = g.nodes[j].label;
+      const SlotRow<const FarthestTwo> far_j = far[j];
+      for (int c = 0; c < classes; ++c) {
+        int k = far_j[c].first;
+        if (k == i && !allow_k_equals_i) k = far_j[c].second;
+        if (k < 0) continue;
+        const double length = g.distance(i, j) + g.distance(j, k);
+        const int alpha = classes * m + c;
+        if (length > best_length[alpha]) {  // strict: the first path found (lowest j) keeps a tie
+          best_length[alpha] = length;
+          paths[alpha] = TwoStepPath{j, k};
+        }
+      }
+    }
+  }
+}
 
 }  // namespace
 
@@ -31,17 +62,22 @@ void checkNodeCount(size_t count, const GraphConfig& config, const std::string& 
               std::to_string(kMaxGraphNodes) + ")");
 }
 
-SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config) {
+SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config, int num_classes) {
   checkNodeCount(nodes.size(), config);
+  if (num_classes < 1 || num_classes > kMaxClasses) {
+    throw Error("buildGraph: " + std::to_string(num_classes) + " classes, expected 1.." + std::to_string(kMaxClasses));
+  }
+  const int num_slots = num_classes * num_classes;
   // Nodes may come straight from a user (LoopDetector::process(nodes), node files): check what indexing relies on.
   for (size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {
+    if (nodes[i].label < 0 || nodes[i].label >= num_classes) {
       throw Error("node " + std::to_string(i) + " has label " + std::to_string(nodes[i].label) +
-                  ", not a stable class index 0..6");
+                  ", not a stable class index 0.." + std::to_string(num_classes - 1));
     }
     if (!nodes[i].centre.allFinite()) throw Error("node " + std::to_string(i) + " has a NaN or Inf centre");
   }
   SemanticGraph g;
+  g.num_classes = num_classes;
   g.nodes = std::move(nodes);
   const int n = g.size();
   g.distance.resize(n, n);
@@ -61,7 +97,8 @@ SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config) {
 
   // For every j and class c: its two farthest neighbours of class c. The best k of a path i→j→k is the farthest
   // one unless that is i itself (excluded when k ≠ i is required), then the second.
-  std::vector<std::array<FarthestTwo, kNumClasses>> far(n);
+  SlotRows<FarthestTwo> far;  // far[j][c], one row of C classes per node
+  far.assign(n, num_classes, FarthestTwo{});
   for (int j = 0; j < n; ++j) {
     for (int k = 0; k < n; ++k) {
       if (!g.adjacent(j, k)) continue;
@@ -76,26 +113,12 @@ SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config) {
     }
   }
 
-  g.paths.assign(n, {});
-  for (int i = 0; i < n; ++i) {
-    std::array<double, kNumSlots> best_length;
-    best_length.fill(-1.0);
-    auto& paths = g.paths[i];
-    for (int j = 0; j < n; ++j) {
-      if (!g.adjacent(i, j)) continue;
-      const int m = g.nodes[j].label;
-      for (int c = 0; c < kNumClasses; ++c) {
-        int k = far[j][c].first;
-        if (k == i && !config.allow_k_equals_i) k = far[j][c].second;
-        if (k < 0) continue;
-        const double length = g.distance(i, j) + g.distance(j, k);
-        const int alpha = kNumClasses * m + c;
-        if (length > best_length[alpha]) {  // strict: the first path found (lowest j) keeps a tie
-          best_length[alpha] = length;
-          paths[alpha] = TwoStepPath{j, k};
-        }
-      }
-    }
+  g.paths.assign(n, num_slots, TwoStepPath{});
+  // The paper's seven classes get a loop the compiler unrolls (the default must not pay for the runtime count).
+  if (num_classes == kNumPaperClasses) {
+    longestPaths<kNumPaperClasses>(g, far, config.allow_k_equals_i, num_classes);
+  } else {
+    longestPaths<0>(g, far, config.allow_k_equals_i, num_classes);
   }
   return g;
 }

@@ -33,19 +33,19 @@ LabelMap::LabelMap(const LabelConfig& config) : table_(kTableSize, kDropped), kn
   switch (config.preset) {
     case LabelPreset::kSemanticKittiRaw: {
       for (uint16_t id : kSemanticKittiRawIds) known_[id] = 1;
-      const uint16_t stable[kNumClasses] = {50, 51, 70, 71, 72, 80, 81};
-      for (int c = 0; c < kNumClasses; ++c) set(stable[c], c);
+      const uint16_t stable[kNumPaperClasses] = {50, 51, 70, 71, 72, 80, 81};
+      for (int c = 0; c < kNumPaperClasses; ++c) set(stable[c], c);
       break;
     }
     case LabelPreset::kSemanticKittiLearning:
       // Train ids 0..19; classes are train ids 13..19 (spec §1).
       know_range(0, 19);
-      for (int c = 0; c < kNumClasses; ++c) set(13 + c, c);
+      for (int c = 0; c < kNumPaperClasses; ++c) set(13 + c, c);
       break;
     case LabelPreset::kMulRan:
       // Train id = label + 1, so classes are labels 12..18; train ids > 19 (e.g. label 255) are dropped (spec §8).
       know_range(0, 255);
-      for (int c = 0; c < kNumClasses; ++c) set(12 + c, c);
+      for (int c = 0; c < kNumPaperClasses; ++c) set(12 + c, c);
       break;
     case LabelPreset::kMcd:
       know_range(0, 28);
@@ -57,6 +57,14 @@ LabelMap::LabelMap(const LabelConfig& config) : table_(kTableSize, kDropped), kn
         set(id, cls);
       }
       break;
+  }
+  // Extra classes claim ids the preset knows but drops (car = 10 in SemanticKITTI) or declare new ones
+  // (Config::validate rejects an id that already has a class).
+  for (size_t k = 0; k < config.extra_classes.size(); ++k) {
+    for (uint32_t id : config.extra_classes[k].ids) {
+      known_[id & 0xFFFFu] = 1;
+      set(id, kNumPaperClasses + static_cast<int>(k));
+    }
   }
 }
 

@@ -73,7 +73,13 @@ void keepLargest(std::vector<Node>& nodes, const std::vector<size_t>& points, in
 }  // namespace
 
 NodeExtractor::NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes)
-    : config_(cluster), label_map_(labels), max_nodes_(max_nodes) {}
+    : config_(cluster), label_map_(labels), num_classes_(labels.numClasses()), max_nodes_(max_nodes) {
+  if (static_cast<int>(config_.classes.size()) != num_classes_ || num_classes_ > kMaxClasses) {
+    throw Error("NodeExtractor: cluster parameters for " + std::to_string(config_.classes.size()) + " classes, but " +
+                std::to_string(num_classes_) + " classes (at most " + std::to_string(kMaxClasses) +
+                "); Config::addClass declares a class with its parameters");
+  }
+}
 
 NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   if (cloud.points.size() != cloud.labels.size()) {
@@ -103,15 +109,15 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
     cls[i] = label_map_.classOf(id);
     if (cls[i] != kDropped) ++stats.class_points[cls[i]];
   }
-  std::array<std::vector<Eigen::Vector3f>, kNumClasses> by_class;
-  for (int c = 0; c < kNumClasses; ++c) by_class[c].reserve(stats.class_points[c]);
+  std::vector<std::vector<Eigen::Vector3f>> by_class(static_cast<size_t>(num_classes_));
+  for (int c = 0; c < num_classes_; ++c) by_class[c].reserve(stats.class_points[c]);
   for (size_t i = 0; i < cloud.points.size(); ++i) {
     if (cls[i] != kDropped) by_class[cls[i]].push_back(cloud.points[i]);
   }
 
   const double dup2 = config_.duplicate_radius * config_.duplicate_radius;
   std::vector<size_t> node_points;  // original points of each accepted node
-  for (int c = 0; c < kNumClasses; ++c) {
+  for (int c = 0; c < num_classes_; ++c) {
     const auto clusters = clusterCentres(by_class[c], config_.classes[c], config_, &stats.clusters[c]);
     const size_t first_of_class = result.nodes.size();
     for (const Cluster& cluster : clusters) {

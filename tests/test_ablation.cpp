@@ -21,8 +21,8 @@ Eigen::Vector3f slotOf(SubVectorKind kind, SubVectorOrder order = SubVectorOrder
   dc.kind = kind;
   dc.order = order;
   const DescribedFrame f = describeFrame(rightTriangleNodes(), GraphConfig{}, dc);
-  EXPECT_TRUE(f.local[0].isValid(kNumClasses * kFence + kVegetation));
-  return f.local[0].slots[kNumClasses * kFence + kVegetation];
+  EXPECT_TRUE(f.local[0].isValid(kNumPaperClasses * kFence + kVegetation));
+  return f.local[0].slots[kNumPaperClasses * kFence + kVegetation];
 }
 
 TEST(SubVectorKind, HandComputedEntries) {

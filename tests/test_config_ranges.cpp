@@ -1,5 +1,6 @@
 // Config ranges: every numeric key rejects a value outside its documented range with a message naming the file,
 // the line, the YAML key and the range, and accepts the range's boundaries.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <set>
@@ -19,16 +20,21 @@ namespace {
 
 using ::testing::HasSubstr;
 
-/// A YAML document setting the dotted @p key to @p value; the value sits on the line returned in *line.
-std::string yamlFor(const std::string& key, const std::string& value, int* line = nullptr) {
+/// Declares the extra class `vehicle`, whose cluster.vehicle keys the table tests like those of the seven.
+const std::string kVehiclePrelude = "labels:\n  extra_classes: [{name: vehicle, ids: [10]}]\n";
+
+/// A YAML document setting the dotted @p key to @p value after @p prelude; the value sits on the line returned in
+/// *line.
+std::string yamlFor(const std::string& key, const std::string& value, int* line = nullptr,
+                    const std::string& prelude = "") {
   std::vector<std::string> parts;
   std::stringstream ss(key);
   for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
-  std::string doc;
+  std::string doc = prelude;
   for (size_t d = 0; d < parts.size(); ++d) {
     doc += std::string(2 * d, ' ') + parts[d] + ":" + (d + 1 < parts.size() ? "\n" : " " + value + "\n");
   }
-  if (line) *line = static_cast<int>(parts.size());
+  if (line) *line = static_cast<int>(std::count(prelude.begin(), prelude.end(), '\n') + parts.size());
   return doc;
 }
 
@@ -41,15 +47,20 @@ struct Range {
   std::vector<std::string> bad;   ///< written as the message prints them (shortest round-trip text)
   std::string range;              ///< "[0, 1]"; or, for a check made while parsing, the parser's message
   bool parse_level = false;       ///< the YAML reader rejects the value before Config::validate() sees it
+  std::string prelude = {};       ///< YAML before the key (the declaration of an extra class)
 };
 
 std::vector<Range> ranges() {
   std::vector<Range> r;
-  for (const char* c : kClassNames) {
-    const std::string p = std::string("cluster.") + c + ".";
-    r.push_back({p + "voxel", {"0", "0.001", "10"}, {"-1", "0.0005", "10.5"}, "0 (no downsampling) or [0.001, 10]"});
-    r.push_back({p + "radius", {"0.001", "10"}, {"0", "-1", "11"}, "[0.001, 10]"});
-    r.push_back({p + "min_size", {"1", "1000000"}, {"0", "-5", "1000001"}, "[1, 1000000]"});
+  std::vector<std::string> classes(kClassNames.begin(), kClassNames.end());
+  classes.push_back("vehicle");
+  for (const std::string& c : classes) {
+    const std::string p = "cluster." + c + ".";
+    const std::string pre = c == "vehicle" ? kVehiclePrelude : "";
+    r.push_back({p + "voxel", {"0", "0.001", "10"}, {"-1", "0.0005", "10.5"}, "0 (no downsampling) or [0.001, 10]",
+                 false, pre});
+    r.push_back({p + "radius", {"0.001", "10"}, {"0", "-1", "11"}, "[0.001, 10]", false, pre});
+    r.push_back({p + "min_size", {"1", "1000000"}, {"0", "-5", "1000001"}, "[1, 1000000]", false, pre});
   }
   r.push_back({"cluster.max_neighbors", {"1", "10000"}, {"0", "10001"}, "[1, 10000]"});
   r.push_back({"cluster.duplicate_radius", {"0", "100"}, {"-0.5", "100.5"}, "[0, 100]"});
@@ -95,6 +106,9 @@ std::vector<Range> ranges() {
   r.push_back({"labels.custom_map", {"{0: -1, 65535: 6}"}, {"{65536: 0}", "{-1: 0}"}, "ids must be integers 0..65535",
                true});
   r.push_back({"labels.custom_map", {}, {"{50: 7}", "{50: -2}"}, "classes must be integers -1..6", true});
+  r.push_back({"labels.extra_classes", {"[{name: car, ids: [0, 10, 65535]}]"},
+               {"[{name: car, ids: [65536]}]", "[{name: car, ids: [-1]}]"}, "entry 0: ids must be integers 0..65535",
+               true});
   return r;
 }
 
@@ -102,7 +116,7 @@ TEST(ConfigRanges, EveryNumericKeyRejectsValuesOutsideItsRange) {
   for (const Range& row : ranges()) {
     for (const std::string& bad : row.bad) {
       int line = 0;
-      const std::string yaml = yamlFor(row.key, bad, &line);
+      const std::string yaml = yamlFor(row.key, bad, &line, row.prelude);
       const std::string at = "my.yaml:" + std::to_string(line) + ": " + row.key;
       const std::string expected =
           row.parse_level ? at + ": " + row.range : at + " = " + bad + " is out of range " + row.range;
@@ -114,17 +128,17 @@ TEST(ConfigRanges, EveryNumericKeyRejectsValuesOutsideItsRange) {
 TEST(ConfigRanges, EveryNumericKeyAcceptsItsBoundaries) {
   for (const Range& row : ranges()) {
     for (const std::string& good : row.good) {
-      EXPECT_EQ(errorOf(yamlFor(row.key, good)), "(no error)") << row.key << ": " << good;
+      EXPECT_EQ(errorOf(yamlFor(row.key, good, nullptr, row.prelude)), "(no error)") << row.key << ": " << good;
     }
   }
 }
 
 TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
-  // Every key that `sgtllc config` prints with a number (or the id map) must have a row, so a new field cannot
-  // arrive without a range test.
+  // Every key that `sgtllc config` prints with a number (or the id map, or the id lists of extra classes) must have
+  // a row, so a new field cannot arrive without a range test. The printed configuration has one extra class.
   std::set<std::string> tested;
   for (const Range& row : ranges()) tested.insert(row.key);
-  std::istringstream text(io::configToYaml(Config{}));
+  std::istringstream text(io::configToYaml(io::parseConfig(kVehiclePrelude)));
   std::vector<std::string> path;
   int numeric = 0;
   for (std::string line; std::getline(text, line);) {
@@ -138,13 +152,13 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     value.erase(0, value.find_first_not_of(' '));
     char* end = nullptr;
     const bool is_number = !value.empty() && (std::strtod(value.c_str(), &end), *end == '\0');
-    if (!is_number && value.rfind('{', 0) != 0) continue;
+    if (!is_number && value.rfind('{', 0) != 0 && value.rfind('[', 0) != 0) continue;
     std::string key;
     for (const std::string& p : path) key += (key.empty() ? "" : ".") + p;
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 7 * 3 + 22 + 18);  // 18 backend.* keys
+  EXPECT_EQ(numeric, 8 * 3 + 23 + 18);  // 8 classes incl. vehicle, 23 other keys, 18 backend.* keys
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

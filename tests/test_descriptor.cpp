@@ -23,7 +23,7 @@ namespace {
 
 using sgtllc::GlobalMode;
 using sgtllc::GraphConfig;
-using sgtllc::kNumSlots;
+using sgtllc::kNumPaperSlots;
 using sgtllc::Node;
 using sgtllc::SubVectorOrder;
 using namespace sgtllc::test;  // test_graph_support.h, test_support.h
@@ -57,7 +57,7 @@ std::vector<double> bruteGlobal(const std::vector<Node>& nodes, const RefGraph& 
                                 SubVectorOrder order) {
   std::vector<double> des(mode == GlobalMode::kG2 ? 343 : 98, 0.0);
   for (size_t i = 0; i < nodes.size(); ++i) {
-    for (int a = 0; a < kNumSlots; ++a) {
+    for (int a = 0; a < kNumPaperSlots; ++a) {
       const auto [j, k] = g.paths[i][a];
       if (j < 0) continue;
       const int o = nodes[i].label, m = a / 7, n = a % 7, fuzzy = m <= 2 ? 0 : 1;
@@ -99,7 +99,7 @@ void expectSameDescriptors(const std::vector<Node>& a, const std::vector<Node>& 
       const auto& da = fa.local[i];
       const auto& db = fb.local[i];
       ASSERT_EQ(da.valid, db.valid) << "node " << i;
-      for (int s = 0; s < kNumSlots; ++s) {
+      for (int s = 0; s < kNumPaperSlots; ++s) {
         const float tol = 1e-4f * std::max(1.0f, da.slots[s].cwiseAbs().maxCoeff());
         ASSERT_LE((da.slots[s] - db.slots[s]).cwiseAbs().maxCoeff(), tol) << "node " << i << " slot " << s;
       }
@@ -263,7 +263,7 @@ TEST(Invariance, NodeLevelRigidMotion) {
     const auto gb = sgtllc::buildGraph(moved, {});
     EXPECT_EQ(ga.adjacency, gb.adjacency);
     for (size_t i = 0; i < nodes.size(); ++i) {
-      for (int s = 0; s < kNumSlots; ++s) {
+      for (int s = 0; s < kNumPaperSlots; ++s) {
         ASSERT_EQ(ga.paths[i][s].j, gb.paths[i][s].j);
         ASSERT_EQ(ga.paths[i][s].k, gb.paths[i][s].k);
       }

@@ -15,7 +15,7 @@
 namespace {
 
 using sgtllc::GraphConfig;
-using sgtllc::kNumSlots;
+using sgtllc::kNumPaperSlots;
 using sgtllc::Node;
 using ::testing::HasSubstr;
 using namespace sgtllc::test;  // test_graph_support.h
@@ -30,14 +30,14 @@ void expectGraphMatches(const std::vector<Node>& nodes, const GraphConfig& cfg) 
   for (int a = 0; a < n; ++a) {
     ASSERT_EQ(g.isolated[a] != 0, ref.isolated[a]) << "node " << a;
     for (int b = 0; b < n; ++b) ASSERT_EQ(g.adjacent(a, b), ref.adj[a][b]) << a << "," << b;
-    for (int s = 0; s < kNumSlots; ++s) {
+    for (int s = 0; s < kNumPaperSlots; ++s) {
       ASSERT_EQ(std::make_pair(g.paths[a][s].j, g.paths[a][s].k), ref.paths[a][s]) << "node " << a << " slot " << s;
     }
   }
   // Local descriptors follow the reference paths (paper order); a k = i winner leaves its slot empty.
   const auto des = sgtllc::computeLocalDescriptors(g, {});
   for (int i = 0; i < n; ++i) {
-    for (int s = 0; s < kNumSlots; ++s) {
+    for (int s = 0; s < kNumPaperSlots; ++s) {
       const auto [j, k] = ref.paths[i][s];
       const bool triangle = j >= 0 && k != i;
       ASSERT_EQ(des[i].isValid(s), triangle);

@@ -15,7 +15,7 @@
 
 namespace sgtllc::test {
 
-constexpr int slot(int m, int n) { return kNumClasses * m + n; }
+constexpr int slot(int m, int n, int num_classes = kNumPaperClasses) { return num_classes * m + n; }
 
 inline Node node(double x, double y, double z, int label) { return Node{Eigen::Vector3d(x, y, z), label}; }
 
@@ -26,10 +26,10 @@ inline std::vector<Node> handNodes() {
           node(100, 0, 0, kTrunk)};
 }
 
-inline std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice) {
+inline std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice, int num_classes = kNumPaperClasses) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> xy(0.0, 80.0), z(0.0, 4.0);
-  std::uniform_int_distribution<int> label(0, kNumClasses - 1), grid(0, 40);
+  std::uniform_int_distribution<int> label(0, num_classes - 1), grid(0, 40);
   std::vector<Node> nodes(n);
   for (Node& nd : nodes) {
     // Lattice nodes tie often (equal path lengths, distances of exactly σ_d = 30 m).
@@ -44,13 +44,14 @@ inline std::vector<Node> randomNodes(uint32_t seed, int n, bool lattice) {
 struct RefGraph {
   std::vector<std::vector<bool>> adj;
   std::vector<bool> isolated;
-  std::vector<std::array<std::pair<int, int>, kNumSlots>> paths;  ///< (j, k) or (−1, −1)
+  std::vector<std::vector<std::pair<int, int>>> paths;  ///< paths[i][C·m + n] = (j, k) or (−1, −1)
 };
 
 inline double dist(const std::vector<Node>& nodes, int a, int b) { return (nodes[a].centre - nodes[b].centre).norm(); }
 
 /// O(N³) path search straight from spec §3: lowest j, then lowest k, wins a tie (strict >).
-inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool allow_k_equals_i) {
+inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool allow_k_equals_i,
+                           int num_classes = kNumPaperClasses) {
   const int n = static_cast<int>(nodes.size());
   RefGraph g;
   g.adj.assign(n, std::vector<bool>(n, false));
@@ -61,10 +62,10 @@ inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool 
       if (g.adj[a][b]) g.isolated[a] = false;
     }
   }
-  g.paths.resize(n);
+  g.paths.assign(n, std::vector<std::pair<int, int>>(static_cast<size_t>(num_classes * num_classes)));
   for (int i = 0; i < n; ++i) {
-    for (int m = 0; m < kNumClasses; ++m) {
-      for (int c = 0; c < kNumClasses; ++c) {
+    for (int m = 0; m < num_classes; ++m) {
+      for (int c = 0; c < num_classes; ++c) {
         std::pair<int, int> best(-1, -1);
         double best_len = -1.0;
         for (int j = 0; j < n; ++j) {
@@ -78,7 +79,7 @@ inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool 
             }
           }
         }
-        g.paths[i][slot(m, c)] = best;
+        g.paths[i][slot(m, c, num_classes)] = best;
       }
     }
   }

@@ -46,7 +46,7 @@ TEST_F(NodesIo, RoundTripIsExactForEveryClassAndAwkwardDoubles) {
   for (int i = 0; i < 200; ++i) {
     Node n;
     for (int k = 0; k < 3; ++k) n.centre[k] = uniform(rng);  // one draw per statement: a fixed order
-    n.label = i % sgtllc::kNumClasses;
+    n.label = i % sgtllc::kNumPaperClasses;
     nodes.push_back(n);
   }
   const double tiny = std::numeric_limits<double>::denorm_min();
@@ -74,7 +74,7 @@ TEST_F(NodesIo, RoundTripIsExactForEveryClassAndAwkwardDoubles) {
 TEST_F(NodesIo, WritesHeaderCommentAndSemanticKittiRawIds) {
   const std::string p = path("nodes.txt");
   std::vector<Node> nodes;
-  for (int c = 0; c < sgtllc::kNumClasses; ++c) nodes.push_back(node(c + 0.5, -2.0, 0.1, c));
+  for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) nodes.push_back(node(c + 0.5, -2.0, 0.1, c));
   sgtllc::io::writeNodesTxt(p, nodes);
   EXPECT_EQ(slurp(p),
             "# x y z label (SemanticKITTI raw id)\n"

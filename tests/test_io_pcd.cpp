@@ -124,7 +124,7 @@ TEST_F(PcdIo, WriteNodesPcdIoRoundTripsThroughReadPcd) {
   std::vector<sgtllc::Node> nodes(25);
   for (size_t i = 0; i < nodes.size(); ++i) {
     nodes[i].centre = Eigen::Vector3d(coord(rng), coord(rng), coord(rng));
-    nodes[i].label = static_cast<int>(i % sgtllc::kNumClasses);
+    nodes[i].label = static_cast<int>(i % sgtllc::kNumPaperClasses);
   }
   const std::string p = (dir_ / "nodes.pcd").string();
   sgtllc::io::writeNodesPcd(p, nodes);

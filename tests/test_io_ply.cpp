@@ -49,10 +49,10 @@ TEST(PlyIoClassColor, IsSemanticKittiPaletteInRgbAndDistinct) {
   EXPECT_EQ(sgtllc::io::classColor(sgtllc::kPole), (std::array<uint8_t, 3>{255, 240, 150}));
   EXPECT_EQ(sgtllc::io::classColor(sgtllc::kTrafficSign), (std::array<uint8_t, 3>{255, 0, 0}));
   std::set<std::array<uint8_t, 3>> distinct;
-  for (int c = 0; c < sgtllc::kNumClasses; ++c) distinct.insert(sgtllc::io::classColor(c));
-  EXPECT_EQ(distinct.size(), static_cast<size_t>(sgtllc::kNumClasses));
+  for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) distinct.insert(sgtllc::io::classColor(c));
+  EXPECT_EQ(distinct.size(), static_cast<size_t>(sgtllc::kNumPaperClasses));
   EXPECT_THROW(sgtllc::io::classColor(-1), Error);
-  EXPECT_THROW(sgtllc::io::classColor(sgtllc::kNumClasses), Error);
+  EXPECT_THROW(sgtllc::io::classColor(sgtllc::kNumPaperClasses), Error);
 }
 
 TEST_F(PlyIo, WritesHeaderVerticesAndEdgesThatParseBack) {

@@ -80,7 +80,7 @@ TEST(Labels, SemanticKittiRawSpotChecks) {
 
 TEST(Labels, SemanticKittiLearningEveryId) {
   std::map<uint32_t, int> classes;
-  for (int c = 0; c < sgtllc::kNumClasses; ++c) classes[13 + c] = c;  // c = train id − 13
+  for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) classes[13 + c] = c;  // c = train id − 13
   expectTable(mapFor(LabelPreset::kSemanticKittiLearning), classes, range(0, 19));
 }
 
@@ -97,7 +97,7 @@ TEST(Labels, SemanticKittiLearningSpotChecks) {
 TEST(Labels, MulRanEveryId) {
   // Train id = label + 1, so labels 12..18 are the classes; a uint8 label space, 255 (train id 256 > 19) dropped.
   std::map<uint32_t, int> classes;
-  for (int c = 0; c < sgtllc::kNumClasses; ++c) classes[12 + c] = c;
+  for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) classes[12 + c] = c;
   expectTable(mapFor(LabelPreset::kMulRan), classes, range(0, 255));
 }
 

@@ -112,7 +112,7 @@ TEST(NodeExtractor, MinSizeCountsVoxelsOrPoints) {
 TEST(NodeExtractor, NodeOrderIsClassOrder) {
   // Classes appear in the cloud in reverse order; nodes must come out building … traffic-sign.
   LabeledCloud cloud;
-  std::vector<Cloud> by_class(sgtllc::kNumClasses);
+  std::vector<Cloud> by_class(sgtllc::kNumPaperClasses);
   by_class[6] = addGrid(&cloud, 81, {60, 0, 2}, kX, kZ, 5, 5);            // traffic-sign, 25 points
   by_class[5] = addRing(&cloud, 80, {50, 0, 0}, 0.0f, 25);               // pole
   by_class[4] = addGrid(&cloud, 72, {0, 30, -1.8f}, kX, kY, 40, 40);     // terrain, 400 voxels
@@ -122,7 +122,7 @@ TEST(NodeExtractor, NodeOrderIsClassOrder) {
   by_class[0] = addGrid(&cloud, 50, {0, 0, 0}, kX, kZ, 50, 20);          // building, 250 voxels
   const auto result = extract(cloud);
   ASSERT_EQ(result.nodes.size(), 7u);
-  for (int c = 0; c < sgtllc::kNumClasses; ++c) {
+  for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) {
     EXPECT_EQ(result.nodes[c].label, c);
     EXPECT_LT((result.nodes[c].centre - mean(by_class[c])).norm(), 1e-9) << sgtllc::kClassNames[c];
     EXPECT_EQ(result.stats.class_points[c], by_class[c].size());
@@ -224,7 +224,7 @@ TEST(NodeExtractor, MismatchedLengthsThrowAndEmptyCloudGivesNoNodes) {
   const auto result = extract(LabeledCloud{});
   EXPECT_TRUE(result.nodes.empty());
   EXPECT_EQ(result.stats.input_points, 0u);
-  for (int c = 0; c < sgtllc::kNumClasses; ++c) EXPECT_EQ(result.stats.clusters[c], 0);
+  for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) EXPECT_EQ(result.stats.clusters[c], 0);
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ struct PairOptions {
 
 std::vector<io::PlyEdge> graphEdges(const std::vector<Node>& nodes, const Config& config, int offset) {
   std::vector<io::PlyEdge> edges;
-  const SemanticGraph g = buildGraph(nodes, config.graph);
+  const SemanticGraph g = buildGraph(nodes, config.graph, config.numClasses());
   for (const auto& [p, q] : g.edges()) edges.push_back(io::PlyEdge{p + offset, q + offset, {160, 160, 160}});
   return edges;
 }
@@ -55,10 +55,11 @@ void exportGraphs(const std::string& dir, const ExportPaths& p, const PairResult
   if (ec || !std::filesystem::is_directory(dir)) throw Error("cannot create export folder " + dir + ": " + ec.message());
   const io::Overwrite overwrite = io::overwriteIf(force);
   const auto& [q, m, qm, qn, mn] = p;
-  io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0), overwrite);
-  io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0), overwrite);
-  io::writeNodesTxt(qn, r.query_nodes, overwrite);
-  io::writeNodesTxt(mn, r.match_nodes, overwrite);
+  const int num_classes = config.numClasses();
+  io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0), num_classes, overwrite);
+  io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0), num_classes, overwrite);
+  io::writeNodesTxt(qn, r.query_nodes, config.labels, overwrite);
+  io::writeNodesTxt(mn, r.match_nodes, config.labels, overwrite);
 
   std::vector<Node> both = r.match_nodes;
   const int offset = static_cast<int>(both.size());
@@ -74,7 +75,7 @@ void exportGraphs(const std::string& dir, const ExportPaths& p, const PairResult
     edges.push_back(io::PlyEdge{a.match, offset + a.query,
                                 inlier[k] ? std::array<uint8_t, 3>{0, 200, 0} : std::array<uint8_t, 3>{220, 0, 0}});
   }
-  io::writeGraphPly(qm, both, edges, overwrite);
+  io::writeGraphPly(qm, both, edges, num_classes, overwrite);
 }
 
 std::string inputSummary(const FrameNodes& f) {
@@ -102,7 +103,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
             << "\n";
 }
 
-void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
+void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
   const MatchResult& m = r.match;
   Json matches = Json::array();
   std::vector<bool> inlier(m.associations.size(), false);
@@ -111,7 +112,7 @@ void printJson(const PairOptions& o, const PairResult& r, double load_ms) {
     const NodeMatch& a = m.associations[k];
     matches.push_back({{"query_node", a.query},
                        {"match_node", a.match},
-                       {"class", kClassNames[r.query_nodes[a.query].label]},
+                       {"class", config.labels.className(r.query_nodes[a.query].label)},
                        {"similarity", a.similarity},
                        {"inlier", static_cast<bool>(inlier[k])}});
   }
@@ -145,7 +146,7 @@ void runPair(const PairOptions& o) {
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
   const double load_ms = q.load_ms + mt.load_ms;
   if (o.json) {
-    printJson(o, r, load_ms);
+    printJson(o, r, config, load_ms);
   } else {
     printText(o, r, q, mt, config, load_ms);
   }

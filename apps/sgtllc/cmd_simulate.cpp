@@ -40,7 +40,7 @@ T percentile(const std::vector<T>& v, double q) {
   return static_cast<T>(eval::percentile(std::vector<double>(v.begin(), v.end()), q));
 }
 
-std::vector<int> totals(const std::vector<std::array<int, kNumClasses>>& nodes) {
+std::vector<int> totals(const std::vector<std::array<int, kNumPaperClasses>>& nodes) {
   std::vector<int> out;
   for (const auto& n : nodes) out.push_back(std::accumulate(n.begin(), n.end(), 0));
   return out;

@@ -110,7 +110,7 @@ void warnAboutInput(const std::string& name, const ExtractionStats& stats, int n
               << stats.capped_nodes << " smallest (graph.max_nodes)\n";
   }
   if (num_nodes == 0) {
-    std::cerr << "warning: " << name << ": no graph nodes (no clusters of the 7 stable classes); it cannot be a loop\n";
+    std::cerr << "warning: " << name << ": no graph nodes (no clusters of the stable classes); it cannot be a loop\n";
   }
 }
 

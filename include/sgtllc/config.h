@@ -15,6 +15,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "sgtllc/backend/backend_config.h"
 #include "sgtllc/types.h"
@@ -30,10 +31,35 @@ enum class LabelPreset {
   kCustom,                 ///< LabelConfig::custom_map only
 };
 
+/// A class beyond the paper's seven (e.g. vehicle), declared by the configuration. It becomes class index
+/// 7 + its position in LabelConfig::extra_classes and clusters with its own ClassClusterConfig.
+struct ExtraClass {
+  /// Lower-case name, as in `cluster.NAME` and in printed results: letters a–z, digits, '-' and '_', starting with
+  /// a letter; unique and not one of the paper's seven.
+  std::string name;
+  /// Raw ids (in the convention of LabelConfig::preset, 0..65535) that map to this class, each listed once and
+  /// none a stable id of the preset (a SemanticKITTI id such as car = 10 is in the label space but dropped by the
+  /// preset, so it may be claimed). May be empty only with preset custom, where custom_map can target the class.
+  std::vector<uint32_t> ids;
+
+  bool operator==(const ExtraClass& o) const { return name == o.name && ids == o.ids; }
+};
+
 struct LabelConfig {
   LabelPreset preset = LabelPreset::kSemanticKittiRaw;  ///< id convention of the input labels (spec §1, §8)
-  /// Raw id → stable class index (0..6). Used when preset is kCustom; ids not listed are dropped.
+  /// Raw id → stable class index (0..C−1) or −1 (known, dropped). Used when preset is kCustom; ids not listed are
+  /// unknown.
   std::map<uint32_t, int> custom_map;
+  /// Classes 7, 8, … beyond the paper's seven, in this order; none by default. The class count is
+  /// C = 7 + extra_classes.size() ≤ kMaxClasses = 16, and the descriptors grow with it: C² slots of 3 entries per
+  /// node (7 classes: 147-D, 16: 768-D), G1/G3 2·C² (98 → 512) and G2 C³ floats per frame (343 → 4,096 = 16 KB,
+  /// stored for every frame of the database; retrieval time grows in proportion).
+  std::vector<ExtraClass> extra_classes;
+
+  /// C: the paper's seven classes plus the extra ones.
+  int numClasses() const { return kNumPaperClasses + static_cast<int>(extra_classes.size()); }
+  /// Name of class @p c (kClassNames, then ExtraClass::name); "class-N" for an index outside 0..C−1.
+  std::string className(int c) const;
 };
 
 /// Where a node's centre comes from (spec §2 and §11).
@@ -52,8 +78,9 @@ struct ClassClusterConfig {
 };
 
 struct ClusterConfig {
-  /// Indexed by class (building, fence, vegetation, trunk, terrain, pole, traffic-sign).
-  std::array<ClassClusterConfig, kNumClasses> classes = {{
+  /// Indexed by class: building, fence, vegetation, trunk, terrain, pole, traffic-sign, then the extra classes of
+  /// LabelConfig::extra_classes in their order (Config::addClass appends both). One entry per class.
+  std::vector<ClassClusterConfig> classes = {
       {0.4, 1.0, 200},  // building
       {0.4, 1.0, 20},   // fence
       {0.4, 1.0, 150},  // vegetation
@@ -61,7 +88,7 @@ struct ClusterConfig {
       {0.4, 1.0, 150},  // terrain
       {0.0, 1.0, 20},   // pole
       {0.0, 1.0, 20},   // traffic-sign
-  }};
+  };
   int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (spec §2) [1, 10000]
   /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (spec §2) [0, 100].
   double duplicate_radius = 1.0;
@@ -138,8 +165,8 @@ enum class NodeScore {
 struct AssociationConfig {
   double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (spec §6) [-1, 1]
   double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (spec §6) (0, 1000000]
-  /// σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6). [0, 1] with score ratio; [0, 49] (the slot
-  /// count) with score count.
+  /// σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6). [0, 1] with score ratio; [0, C²] (the slot
+  /// count: 49 for the seven classes) with score count.
   double sigma_2 = 0.3;
   NodeScore score = NodeScore::kRatio;  ///< node similarity form (spec §6)
   /// Sub-vector entries compared, by vertex: bit 0 = v_i, bit 1 = v_j, bit 2 = v_k (ablation: drop one). The
@@ -201,8 +228,16 @@ struct Config {
   /// separate sgtllc_backend library. Ranges: validateBackendConfig (config_backend.cpp) and docs/backend.md.
   backend::BackendConfig backend;
 
+  /// C = labels.numClasses().
+  int numClasses() const { return labels.numClasses(); }
+
+  /// Declares an extra class (labels.extra_classes) with its clustering parameters (cluster.classes); returns its
+  /// class index. Config::validate() checks the name and ids.
+  int addClass(ExtraClass extra, const ClassClusterConfig& cluster = {});
+
   /// Throws ConfigError for the first field whose value is out of range, e.g.
-  /// "verification.sigma_4 = 5 is out of range [0, 1]".
+  /// "verification.sigma_4 = 5 is out of range [0, 1]", or an invalid class set
+  /// ("labels.extra_classes[0].name: 'pole' is one of the paper's classes").
   void validate() const;
 };
 

@@ -64,7 +64,7 @@ class LoopDetector {
   /// differ in length.
   FrameResult process(const LabeledCloud& cloud);
   /// Processes a frame given as ready-made nodes (centre + stable class), e.g. from an instance segmentation.
-  /// Throws sgtllc::Error for more than graph.max_nodes nodes, a label outside 0..6 or a non-finite centre; the
+  /// Throws sgtllc::Error for more than graph.max_nodes nodes, a label outside 0..C−1 or a non-finite centre; the
   /// frame is then not stored.
   FrameResult process(std::vector<Node> nodes);
 

@@ -1,5 +1,6 @@
 /// @file labels.h
-/// @brief Mapping of raw per-point semantic ids to the seven stable classes (spec §1, §8).
+/// @brief Mapping of raw per-point semantic ids to the stable classes: the paper's seven (spec §1, §8) and the
+///        configuration's extra classes.
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,8 @@ namespace sgtllc {
 /// Class assigned to ids that are dropped (not one of the stable classes).
 inline constexpr int8_t kDropped = -1;
 
-/// Lookup table from a raw id to a stable class index (0..6) or kDropped. Only the low 16 bits of an id are used,
+/// Lookup table from a raw id to a stable class index (0..C−1: the preset's seven classes, then
+/// LabelConfig::extra_classes) or kDropped. Only the low 16 bits of an id are used,
 /// so SemanticKITTI instance ids in the high half are ignored for every preset.
 class LabelMap {
  public:

@@ -19,8 +19,8 @@ struct ExtractionStats {
   size_t nonfinite_points = 0;    ///< points with a NaN or Inf coordinate, dropped
   size_t far_points = 0;          ///< points beyond ±kMaxCoordinate on an axis, dropped
   size_t unknown_label_points = 0;  ///< points whose id is not in the preset's label space, dropped
-  std::array<size_t, kNumClasses> class_points{};  ///< kept points per stable class
-  std::array<int, kNumClasses> clusters{};          ///< clusters of at least min_size per class
+  std::array<size_t, kMaxClasses> class_points{};  ///< kept points per stable class (0 beyond the class count C)
+  std::array<int, kMaxClasses> clusters{};          ///< clusters of at least min_size per class (0 beyond C)
   int duplicates_suppressed = 0;  ///< clusters skipped because an accepted same-class centre was too close
   /// Nodes dropped because the scan had more than max_nodes: the ones with the fewest points (GraphConfig::max_nodes).
   int capped_nodes = 0;
@@ -29,7 +29,8 @@ struct ExtractionStats {
 /// Largest |coordinate| (m) a point may have: far beyond any LiDAR range, small enough for exact voxel cells.
 inline constexpr float kMaxCoordinate = 1.0e6f;
 
-/// Nodes of one scan, building first … traffic-sign last, each class in FEC order (spec §2 node order).
+/// Nodes of one scan in class order (building first … traffic-sign, then the extra classes), each class in FEC
+/// order (spec §2 node order).
 struct NodeExtractionResult {
   std::vector<Node> nodes;
   ExtractionStats stats;
@@ -40,7 +41,9 @@ class NodeExtractor {
  public:
   /// A scan with more than @p max_nodes nodes (after duplicate suppression) keeps the max_nodes whose clusters
   /// have the most original points, ties to the earlier node, in node order; 0 = no limit. Pass
-  /// Config::graph.max_nodes so that every scan's graph stays within the limit buildGraph enforces.
+  /// Config::graph.max_nodes so that every scan's graph stays within the limit buildGraph enforces. The classes
+  /// are those of @p labels (LabelConfig::numClasses()); throws sgtllc::Error unless @p cluster has one
+  /// ClassClusterConfig per class.
   NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes = GraphConfig{}.max_nodes);
 
   /// Throws sgtllc::Error if points and labels differ in length.
@@ -49,6 +52,7 @@ class NodeExtractor {
  private:
   ClusterConfig config_;
   LabelMap label_map_;
+  int num_classes_;
   int max_nodes_;
 };
 

@@ -12,10 +12,15 @@
 
 namespace sgtllc {
 
-/// Number of stable semantic classes kept as graph nodes (spec §1).
-inline constexpr int kNumClasses = 7;
+/// Number of the paper's stable semantic classes (spec §1): the default class set. A configuration may declare
+/// more (LabelConfig::extra_classes), numbered from 7 on; LabelConfig::numClasses() is the class count C.
+inline constexpr int kNumPaperClasses = 7;
 
-/// Stable class indices in the order every 7×7 hash uses (spec §1 table): c = train id − 13.
+/// Upper bound of the class count C: the paper's seven plus at most nine extra classes. The G2 global descriptor
+/// has C³ entries (16 classes: 4,096 floats, 16 KB per frame; GlobalMode) and a local descriptor C² slots.
+inline constexpr int kMaxClasses = 16;
+
+/// The paper's stable class indices in the order every C×C hash uses (spec §1 table): c = train id − 13.
 enum SemanticClass : int {
   kBuilding = 0,
   kFence = 1,
@@ -26,8 +31,9 @@ enum SemanticClass : int {
   kTrafficSign = 6,
 };
 
-/// Lower-case class names in class-index order ("building", …, "traffic-sign").
-inline constexpr std::array<const char*, kNumClasses> kClassNames = {
+/// Lower-case names of the paper's classes in class-index order ("building", …, "traffic-sign"); extra classes are
+/// named by the configuration (LabelConfig::className).
+inline constexpr std::array<const char*, kNumPaperClasses> kClassNames = {
     "building", "fence", "vegetation", "trunk", "terrain", "pole", "traffic-sign"};
 
 /// A LiDAR scan with one raw semantic id per point, in the sensor frame.
@@ -39,7 +45,7 @@ struct LabeledCloud {
 /// One semantic-graph node: an object instance reduced to its centre and class (spec §2).
 struct Node {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< p_i, metres, sensor frame
-  int label = 0;                                      ///< l_i, stable class index 0..6
+  int label = 0;                                      ///< l_i, stable class index 0..C−1 (0..6 by default)
 };
 
 /// Error for bad input data or configuration. The message names the offending item.

@@ -74,7 +74,8 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
   std::vector<std::exception_ptr> errors(to_load.size());
   parallelFor(static_cast<int>(to_load.size()), options.threads, [&](int k) {
     try {
-      frames[k] = describeFrame(source.load(to_load[k]).nodes, config.graph, config.descriptor);
+      frames[k] = describeFrame(source.load(to_load[k]).nodes, config.graph, config.descriptor, /*with_global=*/true,
+                                config.numClasses());
     } catch (...) {
       errors[k] = std::current_exception();
     }

@@ -1,5 +1,5 @@
-// The `backend.*` keys of the configuration YAML (config_yaml.cpp), kept apart so the back end's settings live in
-// one place. config_yaml.cpp owns the field machinery and passes it in as the makers below.
+// The `backend.*` keys of the configuration YAML (config_fields.cpp), kept apart so the back end's settings live in
+// one place. config_fields.cpp owns the field machinery and passes it in as the makers below.
 #pragma once
 
 #include <functional>
@@ -11,7 +11,7 @@
 
 namespace sgtllc::io::detail {
 
-/// How config_yaml.cpp adds one field of each kind (key, comment, reference to the value).
+/// How config_fields.cpp adds one field of each kind (key, comment, reference to the value).
 struct BackendFieldMakers {
   std::function<void(std::string, std::string, std::function<double&(Config&)>)> number;
   std::function<void(std::string, std::string, std::function<int&(Config&)>)> integer;

@@ -26,11 +26,11 @@ std::string readWholeFile(const std::string& path) {
   return bytes;
 }
 
-void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes) {
+void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes, int num_classes) {
   for (size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].label < 0 || nodes[i].label >= kNumClasses) {
+    if (nodes[i].label < 0 || nodes[i].label >= num_classes) {
       throw Error("cannot write " + path + ": node " + std::to_string(i) + " has label " +
-                  std::to_string(nodes[i].label) + ", not a stable class index 0.." + std::to_string(kNumClasses - 1));
+                  std::to_string(nodes[i].label) + ", not a stable class index 0.." + std::to_string(num_classes - 1));
     }
   }
 }

@@ -42,9 +42,9 @@ FilePtr openForReading(const std::string& path);
 /// The whole contents of a file (opened as openForReading); throws `cannot read PATH: REASON` on a read error.
 std::string readWholeFile(const std::string& path);
 
-/// Throws `cannot write PATH: node I has label L, not a stable class index 0..6` for the first node whose label is
-/// not a stable class index. Writers call it before creating the file.
-void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes);
+/// Throws `cannot write PATH: node I has label L, not a stable class index 0..C−1` (C = @p num_classes) for the
+/// first node whose label is not a stable class index. Writers call it before creating the file.
+void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes, int num_classes);
 
 /// Next line of @p text starting at @p pos (without its '\n'); advances @p pos past the newline.
 std::string_view nextLine(std::string_view text, size_t& pos);

@@ -13,7 +13,7 @@ namespace sgtllc::io {
 namespace {
 
 // SemanticKITTI raw id of each stable class (semantic-kitti.yaml), in class-index order (spec §1 table).
-constexpr std::array<uint32_t, kNumClasses> kSemanticKittiRawId = {50, 51, 70, 71, 72, 80, 81};
+constexpr std::array<uint32_t, kNumPaperClasses> kSemanticKittiRawId = {50, 51, 70, 71, 72, 80, 81};
 
 constexpr const char* kAxisNames[3] = {"x", "y", "z"};
 
@@ -32,6 +32,18 @@ void parseRow(const std::vector<std::string_view>& tokens, const std::string& wh
   if (!detail::parseInteger(tokens[3], id)) {
     throw Error(where + ": label " + quoteContent(tokens[3]) + " is not an unsigned 32-bit integer id");
   }
+}
+
+/// The raw id written for class @p c: SemanticKITTI's for the paper's seven, the first declared id of an extra
+/// class, or (preset custom) the lowest custom_map id that targets it.
+uint32_t rawIdOf(int c, const LabelConfig& labels, const std::string& path) {
+  if (c < kNumPaperClasses) return kSemanticKittiRawId[static_cast<size_t>(c)];
+  const ExtraClass& extra = labels.extra_classes[static_cast<size_t>(c - kNumPaperClasses)];
+  if (!extra.ids.empty()) return extra.ids.front();
+  for (const auto& [id, cls] : labels.custom_map) {
+    if (cls == c) return id;
+  }
+  throw Error("cannot write " + path + ": class '" + extra.name + "' has no raw id to write");
 }
 
 }  // namespace
@@ -62,20 +74,23 @@ std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, 
   return nodes;
 }
 
-void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite) {
-  detail::checkNodeLabels(path, nodes);
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, const LabelConfig& labels,
+                   Overwrite overwrite) {
+  detail::checkNodeLabels(path, nodes, labels.numClasses());
+  std::vector<uint32_t> ids(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) ids[i] = rawIdOf(nodes[i].label, labels, path);
   for (size_t i = 0; i < nodes.size(); ++i) {
     if (!nodes[i].centre.allFinite()) {
       throw Error("cannot write " + path + ": node " + std::to_string(i) + " has a non-finite centre");
     }
   }
   std::string out = "# x y z label (SemanticKITTI raw id)\n";
-  for (const Node& node : nodes) {
+  for (size_t i = 0; i < nodes.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
-      detail::appendShortest(out, node.centre[k]);
+      detail::appendShortest(out, nodes[i].centre[k]);
       out += ' ';
     }
-    out += std::to_string(kSemanticKittiRawId[static_cast<size_t>(node.label)]) + '\n';
+    out += std::to_string(ids[i]) + '\n';
   }
   writeFileAtomically(path, out, overwrite);
 }

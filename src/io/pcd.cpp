@@ -211,8 +211,8 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
   throw Error(path + ": unsupported DATA type");  // unreachable: parsePcdHeader rejects the rest
 }
 
-void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite) {
-  detail::checkNodeLabels(path, nodes);
+void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, int num_classes, Overwrite overwrite) {
+  detail::checkNodeLabels(path, nodes, num_classes);
   const std::string n = std::to_string(nodes.size());
   std::string out =
       "# .PCD v0.7 - Point Cloud Data file format\n"

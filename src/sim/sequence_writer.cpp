@@ -35,15 +35,15 @@ struct FrameSlot {
   uint32_t points = 0;
   std::map<uint16_t, uint64_t> classes;
   bool sampled = false;
-  std::array<int, kNumClasses> nodes{}, true_nodes{};
+  std::array<int, kNumPaperClasses> nodes{}, true_nodes{};
   std::exception_ptr error;
 };
 
-std::array<int, kNumClasses> nodesPerClass(const NodeExtractor& extractor, const SimFrame& f, bool truth) {
+std::array<int, kNumPaperClasses> nodesPerClass(const NodeExtractor& extractor, const SimFrame& f, bool truth) {
   LabeledCloud cloud;
   cloud.points = f.points;
   cloud.labels = truth ? f.true_labels : f.labels;
-  std::array<int, kNumClasses> count{};
+  std::array<int, kNumPaperClasses> count{};
   for (const Node& n : extractor.extract(cloud).nodes) ++count[n.label];
   return count;
 }

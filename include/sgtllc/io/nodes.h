@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sgtllc/config.h"
 #include "sgtllc/labels.h"
 #include "sgtllc/io/output_file.h"
 #include "sgtllc/types.h"
@@ -35,11 +36,15 @@ std::vector<Node> readNodesTxt(const std::string& path, const LabelMap& labels, 
 
 /// Writes one row per node after a comment line `# x y z label (SemanticKITTI raw id)`. The label is written as
 /// the SemanticKITTI raw id of the node's class (building 50, fence 51, vegetation 70, trunk 71, terrain 72,
-/// pole 80, traffic-sign 81), so readNodesTxt with the default LabelMap reads the nodes back; coordinates are
-/// written as the shortest text that reads back to the same double (std::to_chars), so the round trip is exact.
-/// Throws sgtllc::Error naming the file, before creating it, if a label is outside 0..6 or a coordinate is not
-/// finite; and if the file cannot be written.
+/// pole 80, traffic-sign 81) and, for an extra class of @p labels, as its first id in ExtraClass::ids (with
+/// preset custom and no ids: the lowest custom_map id of the class), so readNodesTxt with LabelMap(@p labels)
+/// (the SemanticKITTI preset) reads the nodes back; coordinates are written as the shortest text that reads back
+/// to the same double (std::to_chars), so the round trip is exact.
+/// Throws sgtllc::Error naming the file, before creating it, if a label is outside 0..C−1 (C =
+/// labels.numClasses()), an extra class has no id, or a coordinate is not finite; and if the file cannot be
+/// written.
 /// With Overwrite::kRefuse an existing file is kept and the call throws (output_file.h).
-void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite = Overwrite::kReplace);
+void writeNodesTxt(const std::string& path, const std::vector<Node>& nodes, const LabelConfig& labels = {},
+                   Overwrite overwrite = Overwrite::kReplace);
 
 }  // namespace sgtllc::io

@@ -30,10 +30,12 @@ namespace sgtllc::io {
 /// (`truncated binary data: N points need B bytes, found F`) or the LZF block is corrupt.
 LabeledCloud readPcd(const std::string& path, const std::string& label_field = "label");
 
-/// Writes nodes as an ascii PCD v0.7 with fields x y z (F4) and label (U4, the stable class index 0..6), readable by
-/// PCL as pcl::PointXYZL. Coordinates are written as the shortest text that reads back to the same float.
-/// Throws sgtllc::Error naming the file if a label is outside 0..6 or the file cannot be written.
+/// Writes nodes as an ascii PCD v0.7 with fields x y z (F4) and label (U4, the stable class index 0..C−1 for
+/// C = @p num_classes, Config::numClasses()), readable by PCL as pcl::PointXYZL. Coordinates are written as the
+/// shortest text that reads back to the same float.
+/// Throws sgtllc::Error naming the file if a label is outside 0..C−1 or the file cannot be written.
 /// With Overwrite::kRefuse an existing file is kept and the call throws (output_file.h).
-void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, Overwrite overwrite = Overwrite::kReplace);
+void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, int num_classes = kNumPaperClasses,
+                   Overwrite overwrite = Overwrite::kReplace);
 
 }  // namespace sgtllc::io

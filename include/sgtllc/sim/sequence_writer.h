@@ -35,8 +35,8 @@ struct SequenceStats {
   int frames = 0;
   std::vector<uint32_t> points;                   ///< per frame
   std::map<uint16_t, uint64_t> class_points;      ///< written (noisy) semantic id → points over all frames
-  std::vector<std::array<int, kNumClasses>> nodes;       ///< nodes per class of the sampled frames (written labels)
-  std::vector<std::array<int, kNumClasses>> true_nodes;  ///< the same with ground-truth labels
+  std::vector<std::array<int, kNumPaperClasses>> nodes;       ///< nodes per class of the sampled frames (written labels)
+  std::vector<std::array<int, kNumPaperClasses>> true_nodes;  ///< the same with ground-truth labels
   size_t positives = 0, negatives = 0;            ///< loop pairs written
   int query_frames = 0;       ///< frames with a loop candidate within 3 m
   int opposite_queries = 0;   ///< ... of which at least one candidate faces the other way (yaw difference > 135°)
