@@ -29,8 +29,13 @@ std::vector<ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odomet
     l.edge.from = a;
     l.edge.to = b;
     l.edge.kind = backend::EdgeKind::kLoop;
-    l.edge.T_from_to = Eigen::Translation3d(rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0), rng.uniform(-1.0, 1.0)) *
-                       Eigen::AngleAxisd(rng.uniform(-M_PI, M_PI), Eigen::Vector3d::UnitZ());
+    // One draw per statement, so every compiler draws in the same order (sgtllc/sim/rng.h); yaw, z, y, x is the
+    // order GCC drew them in, kept so existing outputs stay the same.
+    const double yaw = rng.uniform(-M_PI, M_PI);
+    const double z = rng.uniform(-1.0, 1.0);
+    const double y = rng.uniform(-10.0, 10.0);
+    const double x = rng.uniform(-10.0, 10.0);
+    l.edge.T_from_to = Eigen::Translation3d(x, y, z) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
     l.edge.information = real.empty() ? nominalLoopInformation(noise)
                                       : real[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(real.size()) - 1))]
                                             .edge.information;

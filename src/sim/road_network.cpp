@@ -98,7 +98,10 @@ RoadNetwork RoadNetwork::generate(const ScenePreset& preset, int blocks_x, int b
   for (int j = 1; j < ny; ++j) ys.push_back(ys.back() + rng.uniform(preset.block_min, preset.block_max));
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
-      const Eigen::Vector2d jitter(rng.uniform(-1, 1), rng.uniform(-1, 1));
+      // y before x: the order GCC drew them in, kept so outputs stay the same (rng.h).
+      const double jitter_y = rng.uniform(-1, 1);
+      const double jitter_x = rng.uniform(-1, 1);
+      const Eigen::Vector2d jitter(jitter_x, jitter_y);
       net.nodes_.push_back(RoadNode{Eigen::Vector2d(xs[i], ys[j]) + preset.node_jitter * jitter, {}});
     }
   }
@@ -114,27 +117,32 @@ RoadNetwork RoadNetwork::generate(const ScenePreset& preset, int blocks_x, int b
   };
   auto bulge = [&](bool avenue) {
     if (avenue || !rng.chance(preset.curve_probability)) return 0.0;
-    return (rng.chance(0.5) ? 1.0 : -1.0) * preset.curve_bulge * rng.uniform(0.5, 1.0);
+    const double sign = rng.chance(0.5) ? 1.0 : -1.0;
+    return sign * preset.curve_bulge * rng.uniform(0.5, 1.0);
   };
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i + 1 < nx; ++i) {
       const bool av = avenue_row[j];
-      net.addEdge(id(i, j), id(i + 1, j), av, av ? preset.avenue : streetProfile(), bulge(av));
+      const double curve = bulge(av);  // drawn before the profile: the order GCC drew them in, kept (rng.h)
+      net.addEdge(id(i, j), id(i + 1, j), av, av ? preset.avenue : streetProfile(), curve);
     }
   }
   for (int i = 0; i < nx; ++i) {
     for (int j = 0; j + 1 < ny; ++j) {
       const bool av = avenue_col[i];
-      net.addEdge(id(i, j), id(i, j + 1), av, av ? preset.avenue : streetProfile(), bulge(av));
+      const double curve = bulge(av);  // drawn before the profile: the order GCC drew them in, kept (rng.h)
+      net.addEdge(id(i, j), id(i, j + 1), av, av ? preset.avenue : streetProfile(), curve);
     }
   }
   for (int j = 0; j + 1 < ny; ++j) {
     for (int i = 0; i + 1 < nx; ++i) {
       if (!rng.chance(preset.diagonal_probability)) continue;
       if (rng.chance(0.5)) {
-        net.addEdge(id(i, j), id(i + 1, j + 1), false, streetProfile(), bulge(false));
+        const double curve = bulge(false);  // drawn before the profile: the order GCC drew them in, kept (rng.h)
+        net.addEdge(id(i, j), id(i + 1, j + 1), false, streetProfile(), curve);
       } else {
-        net.addEdge(id(i + 1, j), id(i, j + 1), false, streetProfile(), bulge(false));
+        const double curve = bulge(false);  // drawn before the profile: the order GCC drew them in, kept (rng.h)
+        net.addEdge(id(i + 1, j), id(i, j + 1), false, streetProfile(), curve);
       }
     }
   }

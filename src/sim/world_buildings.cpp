@@ -95,8 +95,9 @@ void addLotFront(WorldBuilder& b, Rng& rng, const Lot& lot) {
 void addYard(WorldBuilder& b, Rng& rng, const Lot& lot, double depth_free) {
   const ScenePreset& p = b.preset;
   if (depth_free > 3.0 && rng.chance(p.yard_tree_probability)) {
-    const Eigen::Vector2d xy = lot.at(rng.uniform(2.0, std::max(2.5, lot.width() - 2.0)),
-                                      rng.uniform(2.0, std::max(2.2, depth_free - 1.5)));
+    // Depth before position along the lot: the order GCC drew them in, kept so outputs stay the same (rng.h).
+    const double depth = rng.uniform(2.0, std::max(2.2, depth_free - 1.5));
+    const Eigen::Vector2d xy = lot.at(rng.uniform(2.0, std::max(2.5, lot.width() - 2.0)), depth);
     if (b.claimCircle(xy, 1.0, kPrivateLand)) {
       const float change = b.changeTime(rng, p.vegetation_change);
       addTree(b, rng, xy, rng.uniform(0.6, 1.1), change);
@@ -106,8 +107,8 @@ void addYard(WorldBuilder& b, Rng& rng, const Lot& lot, double depth_free) {
     const int n = rng.uniformInt(1, 4);
     for (int k = 0; k < n; ++k) {
       const double radius = rng.uniform(0.6, 1.5);
-      const Eigen::Vector2d xy = lot.at(rng.uniform(1.0, std::max(1.2, lot.width() - 1.0)),
-                                        rng.uniform(1.2, std::max(1.3, depth_free - radius)));
+      const double depth = rng.uniform(1.2, std::max(1.3, depth_free - radius));  // first, as above
+      const Eigen::Vector2d xy = lot.at(rng.uniform(1.0, std::max(1.2, lot.width() - 1.0)), depth);
       if (!b.claimCircle(xy, radius, kPrivateLand)) continue;
       addBush(b, rng, xy, radius, b.changeTime(rng, p.vegetation_change));
     }

@@ -82,10 +82,13 @@ void smallObject(WorldBuilder& b, Rng& rng, const RoadEdge& e, double s, int sid
   b.occupyCircle(xy, 0.5);
   const uint32_t object = b.addObject(ObjectKind::kOther);
   const double yaw = e.headingAt(s);
-  Primitive box = makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy)),
-                          static_cast<float>(rng.uniform(0.5, 1.6)), static_cast<float>(rng.uniform(0.4, 0.7)),
-                          static_cast<float>(rng.uniform(0.8, 1.2)), static_cast<float>(yaw), semantic::kOtherObject,
-                          object);
+  // Height, width, length: the order GCC drew them in, kept so outputs stay the same (rng.h).
+  const double height = rng.uniform(0.8, 1.2);
+  const double width = rng.uniform(0.4, 0.7);
+  const double length = rng.uniform(0.5, 1.6);
+  Primitive box = makeBox(xy.cast<float>(), static_cast<float>(b.groundZ(xy)), static_cast<float>(length),
+                          static_cast<float>(width), static_cast<float>(height), static_cast<float>(yaw),
+                          semantic::kOtherObject, object);
   box.reflectivity = 0.3f;
   b.add(box);
 }

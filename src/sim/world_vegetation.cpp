@@ -62,7 +62,12 @@ void woodland(WorldBuilder& b, Rng& rng, const RoadEdge& e, int side, double s0,
       if (!b.fitsCircle(xy, 0.5, kPrivateLand)) continue;
       b.occupyCircle(xy, 1.0);
       addTree(b, rng, xy, rng.uniform(0.8, 1.4), kInf);
-      if (rng.chance(0.3)) addBush(b, rng, xy + Eigen::Vector2d(rng.uniform(-2, 2), rng.uniform(-2, 2)), 0.9, kInf);
+      if (rng.chance(0.3)) {
+        // y before x: the order GCC drew them in, kept so outputs stay the same (rng.h).
+        const double dy = rng.uniform(-2, 2);
+        const double dx = rng.uniform(-2, 2);
+        addBush(b, rng, xy + Eigen::Vector2d(dx, dy), 0.9, kInf);
+      }
     }
   }
 }
@@ -74,8 +79,10 @@ void addTree(WorldBuilder& b, Rng& rng, const Eigen::Vector2d& xy, double scale,
   const double ground = b.groundZ(xy);
   const double trunk_r = std::min(0.45, rng.uniform(0.13, 0.28) * scale);
   const double crown_base = rng.uniform(1.7, 3.2) * std::sqrt(scale);
-  const Eigen::Vector3f radii(static_cast<float>(rng.uniform(1.8, 3.4) * scale), 0.0f,
-                              static_cast<float>(rng.uniform(1.8, 3.2) * scale));
+  // Vertical radius before horizontal: the order GCC drew them in, kept so outputs stay the same (rng.h).
+  const double radius_z = rng.uniform(1.8, 3.2) * scale;
+  const double radius_x = rng.uniform(1.8, 3.4) * scale;
+  const Eigen::Vector3f radii(static_cast<float>(radius_x), 0.0f, static_cast<float>(radius_z));
   const Eigen::Vector3f r(radii.x(), radii.x() * static_cast<float>(rng.uniform(0.85, 1.15)), radii.z());
   const Eigen::Vector3f centre(static_cast<float>(xy.x()), static_cast<float>(xy.y()),
                                static_cast<float>(ground + crown_base + r.z()));
@@ -100,7 +107,11 @@ void addBush(WorldBuilder& b, Rng& rng, const Eigen::Vector2d& xy, double radius
   for (int k = 0; k < lobes; ++k) {
     const double r = radius * rng.uniform(0.6, 1.3);
     Eigen::Vector2d c = xy;
-    if (k > 0) c += r * Eigen::Vector2d(rng.uniform(-1, 1), rng.uniform(-1, 1));
+    if (k > 0) {
+      const double dy = rng.uniform(-1, 1);  // y before x, as in woodland()
+      const double dx = rng.uniform(-1, 1);
+      c += r * Eigen::Vector2d(dx, dy);
+    }
     const double h = r * rng.uniform(0.6, 1.0);
     Primitive p = makeEllipsoid(Eigen::Vector3f(c.x(), c.y(), ground + 0.6 * h),
                                 Eigen::Vector3f(r, r * rng.uniform(0.8, 1.2), h).cast<float>(), semantic::kVegetation,
