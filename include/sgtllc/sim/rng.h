@@ -4,6 +4,12 @@
 /// Every random decision derives from (seed, purpose, index): a world element, a frame, a ray. No generator is ever
 /// shared between threads, so the output is the same at any thread count. The distributions are implemented here
 /// rather than taken from <random>, whose distributions differ between standard libraries.
+///
+/// Rule: one draw per statement. C++ leaves the order in which function arguments and the operands of + or * are
+/// evaluated unspecified, so `Vec(rng.uniform(), rng.uniform())`, `f(rng.uniform(), drawsToo(rng))` or
+/// `rng.uniform() * rng.uniform()` draw in one order under GCC and another under clang, and the same seed builds
+/// another world. Draw into named locals in separate statements (separate declarators of one declaration, `&&`,
+/// `?:` and braced init lists `T{a, b}` are sequenced and fine). tests/test_sim_pinned.cpp pins reference worlds.
 #pragma once
 
 #include <cstdint>
