@@ -27,6 +27,22 @@ for f in 000052 004501; do
 done
 head -n 3 data/kitti/00/poses.txt > "$seeds/kitti_poses/poses_head.txt"
 cp data/kitti/00/calib.txt "$seeds/kitti_poses/calib.txt"
+# Trajectories: the first poses of the KITTI and TUM excerpts, alone (byte 0 even) and after KITTI 00's calib
+# (byte 0 = 2·s + 1 splits the rest at s/127 of its length; the calib is padded with newlines to end there).
+mkdir -p "$seeds/trajectory"
+odo=data/kitti/00/odometry
+for f in kissicp_first1000_kitti kissicp_first1000_tum semantickitti_poses_first1000; do
+  head -n 3 "$odo/$f.txt" > "$seeds/trajectory/$f.body"
+  { printf '\000'; cat "$seeds/trajectory/$f.body"; } > "$seeds/trajectory/$f"
+  calib_len=$(wc -c < data/kitti/00/calib.txt)
+  body_len=$(wc -c < "$seeds/trajectory/$f.body")
+  s=$(( (127 * calib_len + calib_len + body_len - 1) / (calib_len + body_len) ))
+  pad=0
+  while [ $(( (calib_len + pad + body_len) * s / 127 )) -ne $(( calib_len + pad )) ]; do pad=$((pad + 1)); done
+  { printf "\\$(printf '%03o' $((2 * s + 1)))"; cat data/kitti/00/calib.txt; head -c "$pad" /dev/zero | tr '\0' '\n'
+    cat "$seeds/trajectory/$f.body"; } > "$seeds/trajectory/${f}_calib"
+  rm "$seeds/trajectory/$f.body"
+done
 extra_seeds() {
   case $1 in
     pcd) echo data/pcd ;;

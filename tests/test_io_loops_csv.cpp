@@ -73,6 +73,18 @@ TEST_F(LoopsCsv, RoundTripMapsNamesToIndices) {
   EXPECT_THROW(sgtllc::io::loopEdges({revisit()}, info), Error);  // no indices: not from the reader
 }
 
+// fuzz/regressions/loops_csv/translation_1e70.csv: numbers of 1e63 and more were cut short by the writer.
+TEST_F(LoopsCsv, HugeNumbersAreWrittenWhole) {
+  LoopRecord l = revisit();
+  l.score = -1.5e308;
+  l.T_match_query(0, 3) = 1e70;
+  const std::string file = write("loops.csv", sgtllc::io::loopsCsvText({l}));
+  const std::vector<LoopRecord> back = sgtllc::io::readLoopsCsv(file, kFrames);
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].score, -1.5e308);  // `%.6f` of an integer-valued double is exact
+  EXPECT_EQ(back[0].T_match_query(0, 3), 1e70);
+}
+
 TEST_F(LoopsCsv, HeaderOnlyAndCrlfAreFine) {
   EXPECT_TRUE(sgtllc::io::readLoopsCsv(write("a.csv", kHeader), kFrames).empty());
   std::string crlf = sgtllc::io::loopsCsvText({revisit()});

@@ -172,6 +172,18 @@ TEST_F(TrajectoryIo, CalibWithoutTrIsAnError) {
   EXPECT_THAT(readError(kIdentityKitti, path("missing_calib.txt")), HasSubstr("cannot open"));
 }
 
+// fuzz/regressions/trajectory/calib_overflow: an invertible Tr whose scales overflow Tr⁻¹ · P · Tr for a rotation
+// about z (entry (1, 0) becomes 1e300 · 1 · 1e300); readTrajectory returned an infinite pose.
+TEST_F(TrajectoryIo, CalibThatOverflowsThePosesIsAnError) {
+  const std::string bad_calib = write("calib_scaled.txt", "Tr: 1e300 0 0 0 0 1e-300 0 0 0 0 1 0\n");
+  EXPECT_THAT(readError("0 -1 0 0 1 0 0 0 0 0 1 0\n", bad_calib),
+              AllOf(HasSubstr("calib_scaled.txt: its Tr turns the pose of"), HasSubstr("traj.txt:1 into non-finite")));
+  // The same Tr leaves the identity pose finite (Tr⁻¹ · I · Tr = I): it is the overflow that is rejected.
+  const Trajectory t = sgtllc::io::readTrajectory(write("id.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n"), bad_calib);
+  ASSERT_EQ(t.poses.size(), 1u);
+  EXPECT_TRUE(t.poses[0].matrix().allFinite());
+}
+
 TEST_F(TrajectoryIo, FailedWriteLeavesTheOldFile) {
   const std::string file = write("keep.txt", "old");
   Trajectory t;

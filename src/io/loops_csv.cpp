@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string_view>
 #include <tuple>
 #include <unordered_map>
@@ -21,7 +22,9 @@ constexpr size_t kFirstMatrixColumn = 4;
 constexpr double kOrthonormalTolerance = 1e-3;  // six decimals leave |RᵀR − I| ~ 1e-6
 
 void appendFixed6(std::string& out, double v) {
-  char buf[64];
+  // Room for every finite double: `%.6f` of 1.8e308 has 309 integer digits (a 64-byte buffer cut numbers of
+  // 1e63 and more short, so they read back smaller; fuzz_loops_csv found this, fuzz/README.md).
+  char buf[std::numeric_limits<double>::max_exponent10 + 16];
   std::snprintf(buf, sizeof(buf), "%.6f", v);
   out += buf;
 }

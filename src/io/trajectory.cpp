@@ -102,6 +102,14 @@ Trajectory readKitti(const std::string& path, const std::vector<Row>& rows, cons
   if (!calib_path.empty()) {
     t.calib_Tr = readKittiCalibTr(calib_path);
     poses = lidarPoses(file_poses, *t.calib_Tr);
+    // An invertible but badly scaled Tr (say diag(1e300, 1e-300, 1)) overflows Tr⁻¹ · P · Tr: reject it rather
+    // than return non-finite poses (fuzz_trajectory found this; fuzz/README.md).
+    for (size_t i = 0; i < poses.size(); ++i) {
+      if (!poses[i].allFinite()) {
+        throw Error(calib_path + ": its Tr turns the pose of " + where(path, rows[i].line) +
+                    " into non-finite numbers (not a rigid velodyne-to-cam0 transform)");
+      }
+    }
   }
   t.poses.reserve(poses.size());
   for (const Eigen::Matrix4d& M : poses) t.poses.push_back(isometry(M));
