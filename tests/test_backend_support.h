@@ -65,8 +65,12 @@ inline std::vector<Eigen::Isometry3d> driftingOdometry(const std::vector<Eigen::
   for (size_t i = 1; i < truth.size(); ++i) {
     Eigen::Isometry3d step = truth[i - 1].inverse() * truth[i];
     const double d = step.translation().norm();
-    const Eigen::Vector3d w(sigma_r * n01(rng), sigma_r * n01(rng), sigma_r * n01(rng) + yaw_bias_per_m * d);
-    const Eigen::Vector3d dt(sigma_t * n01(rng), sigma_t * n01(rng), sigma_t * n01(rng));
+    // One draw per statement, last component first: the order of draws in one expression is unspecified, and a
+    // fixed order keeps the drive the same with every compiler (include/sgtllc/sim/rng.h).
+    const double wz = n01(rng), wy = n01(rng), wx = n01(rng);
+    const Eigen::Vector3d w(sigma_r * wx, sigma_r * wy, sigma_r * wz + yaw_bias_per_m * d);
+    const double tz = n01(rng), ty = n01(rng), tx = n01(rng);
+    const Eigen::Vector3d dt(sigma_t * tx, sigma_t * ty, sigma_t * tz);
     step.translation() = (1.0 + scale_error) * step.translation() + dt;
     step.linear() = step.linear() * expSO3(w);
     odometry.push_back(odometry.back() * step);
@@ -83,9 +87,11 @@ inline backend::Edge fittedLoop(int match, int query, const Eigen::Isometry3d& T
   std::normal_distribution<double> n01(0.0, 1.0);
   std::vector<Eigen::Vector3d> query_centres, match_centres;
   for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3d s(u(rng), u(rng), uz(rng));
+    const double sz = uz(rng), sy = u(rng), sx = u(rng);  // one draw per statement (see above)
+    const Eigen::Vector3d s(sx, sy, sz);
     query_centres.push_back(s);
-    match_centres.push_back(T_match_query_true * s + sigma * Eigen::Vector3d(n01(rng), n01(rng), n01(rng)));
+    const double nz = n01(rng), ny = n01(rng), nx = n01(rng);
+    match_centres.push_back(T_match_query_true * s + sigma * Eigen::Vector3d(nx, ny, nz));
   }
   backend::Edge e;
   e.from = match;
@@ -130,7 +136,9 @@ inline std::vector<backend::Edge> falseLoops(const std::vector<Eigen::Isometry3d
     int a = frame(rng), b = frame(rng);
     if ((truth[a].translation() - truth[b].translation()).norm() <= 50.0) continue;
     if (a > b) std::swap(a, b);
-    loops.push_back(fittedLoop(a, b, planarPose({t(rng), t(rng), 0.1 * t(rng)}, yaw(rng)), rng, noise));
+    const double heading = yaw(rng);  // drawn before the translation, in its own statement (see above)
+    const Eigen::Vector3d offset{t(rng), t(rng), 0.1 * t(rng)};  // a braced list is evaluated in order
+    loops.push_back(fittedLoop(a, b, planarPose(offset, heading), rng, noise));
   }
   return loops;
 }
