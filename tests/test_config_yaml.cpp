@@ -150,7 +150,11 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(code.verification.ransac_confidence, 1.0);
   const Config objects = io::loadConfig(dir + "kitti00-objects.yaml");
   EXPECT_EQ(objects.labels.preset, LabelPreset::kCustom);
-  EXPECT_EQ(objects.labels.custom_map, (std::map<uint32_t, int>{{10, 0}, {71, 3}, {80, 5}}));
+  EXPECT_EQ(objects.labels.custom_map, (std::map<uint32_t, int>{{71, 3}, {80, 5}}));
+  ASSERT_EQ(objects.labels.extra_classes.size(), 1u);  // vehicles: an eighth class (README "Extra classes")
+  EXPECT_EQ(objects.labels.extra_classes[0].name, "vehicle");
+  EXPECT_EQ(objects.labels.extra_classes[0].ids, (std::vector<uint32_t>{10}));
+  EXPECT_EQ(objects.numClasses(), 8);
 }
 
 }  // namespace
