@@ -31,7 +31,9 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS) $(if $(TARGETS),--target $(TARGETS))
 
-demo: build
+# The demo and the KITTI 00 runs need only the command-line tool, not the tests and benchmarks of `make build`.
+demo:
+	@$(MAKE) --no-print-directory build TARGETS=sgtllc_cli
 	@echo "== KITTI 00: frame 4501 revisits frame 52 (2.96 m apart, ground truth) =="
 	@$(SGTLLC) pair $(KITTI)/004501.bin $(KITTI)/000052.bin
 	@echo
@@ -48,7 +50,8 @@ $(KITTI00)/objects.stamp: data/kitti/00/objects.tar.xz
 	@touch $@
 
 # Loop detection on KITTI 00 scored against the SemanticKITTI poses: report in build/kitti00/loop-report/.
-kitti00-loops: build $(KITTI00)/objects.stamp
+kitti00-loops: $(KITTI00)/objects.stamp
+	@$(MAKE) --no-print-directory build TARGETS=sgtllc_cli
 	@mkdir -p $(KITTI00)/seq
 	@cp data/kitti/00/poses_semantickitti.txt $(KITTI00)/seq/poses.txt
 	@cp data/kitti/00/calib.txt $(KITTI00)/seq/calib.txt
@@ -59,7 +62,8 @@ kitti00-loops: build $(KITTI00)/objects.stamp
 # the trajectory errors against SemanticKITTI's poses (report in build/kitti00/report/), and the same back end
 # with 5 % injected false loops (report in build/kitti00/report-false-loops/).
 KITTI00_ODOMETRY = --odometry data/kitti/00/kissicp_00_kitti.txt --calib data/kitti/00/calib.txt
-kitti00: build $(KITTI00)/objects.stamp
+kitti00: $(KITTI00)/objects.stamp
+	@$(MAKE) --no-print-directory build TARGETS=sgtllc_cli
 	$(SGTLLC) run --nodes $(KITTI00)/objects --config $(KITTI00_CONFIG) --threads $(JOBS) $(KITTI00_ODOMETRY) \
 	  --out $(KITTI00)/loops.csv --out-trajectory $(KITTI00)/corrected.txt --out-graph $(KITTI00)/graph.g2o \
 	  --out-loops $(KITTI00)/loops.g2o --force
