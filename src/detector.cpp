@@ -24,7 +24,7 @@ const Config& validated(const Config& config) {
 
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
-      extractor_(config.cluster, config.labels, config.graph.max_nodes),
+      extractor_(config.cluster, config.labels, config.graph.max_nodes, config.threads),
       database_(config.retrieval.method) {
 }
 
@@ -92,7 +92,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
 
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config) {
   config.validate();
-  const NodeExtractor extractor(config.cluster, config.labels, config.graph.max_nodes);
+  const NodeExtractor extractor(config.cluster, config.labels, config.graph.max_nodes, config.threads);
   const auto start = Clock::now();
   NodeExtractionResult q = extractor.extract(query);
   NodeExtractionResult m = extractor.extract(match);

@@ -12,6 +12,7 @@ namespace sgtllc {
 namespace {
 
 /// Points bucketed by cubic cell: members of cell c are members[start[c] .. start[c+1]) in ascending index order.
+/// A copy of the points is kept in the same order, so a neighbour search reads each cell's points contiguously.
 class HashGrid {
  public:
   HashGrid(const std::vector<Eigen::Vector3f>& points, double cell)
@@ -24,16 +25,33 @@ class HashGrid {
     members_.resize(points.size());
     std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
     for (size_t i = 0; i < points.size(); ++i) members_[fill[cell_of[i]]++] = static_cast<uint32_t>(i);
+    sorted_.resize(points.size());
+    for (size_t k = 0; k < members_.size(); ++k) sorted_[k] = points[members_[k]];
   }
 
-  /// The occupied cells among the 27 around @p p; returns their number.
-  int nearCells(const Eigen::Vector3f& p, uint32_t cells[27]) const {
-    const internal::Cell c = internal::cellOf(p, inv_cell_);
+  /// The block of cells that holds every point within @p half cells of @p p along each axis (half = 0.5 for cells
+  /// of 2r), widened by the float rounding of cell coordinates (2⁻²⁴ relative per operation): 2 cells per axis, 3
+  /// when p lies near a cell's middle plane. The widening stays below half a cell so a block never exceeds 3 × 3 × 3.
+  struct Block {
+    internal::Cell lo, hi;
+    bool operator==(const Block& o) const { return lo == o.lo && hi == o.hi; }
+  };
+  Block blockAround(const Eigen::Vector3f& p, float half) const {
+    const Eigen::Array3f t = p.array() * inv_cell_;
+    const float reach = std::min(0.999f, half + 1e-4f + 1e-6f * t.abs().maxCoeff());
+    const Eigen::Array3f lo = (t - reach).floor().max(-internal::kMaxCell).min(internal::kMaxCell);
+    const Eigen::Array3f hi = (t + reach).floor().max(-internal::kMaxCell).min(internal::kMaxCell);
+    return Block{internal::Cell{static_cast<int32_t>(lo.x()), static_cast<int32_t>(lo.y()), static_cast<int32_t>(lo.z())},
+                 internal::Cell{static_cast<int32_t>(hi.x()), static_cast<int32_t>(hi.y()), static_cast<int32_t>(hi.z())}};
+  }
+
+  /// The occupied cells of a block of at most 3 × 3 × 3; returns their number.
+  int cellsIn(const Block& b, uint32_t cells[27]) const {
     int count = 0;
-    for (int dz = -1; dz <= 1; ++dz) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const uint32_t cell = index_.find(internal::offset(c, dx, dy, dz));
+    for (int32_t z = b.lo.z; z <= b.hi.z; ++z) {
+      for (int32_t y = b.lo.y; y <= b.hi.y; ++y) {
+        for (int32_t x = b.lo.x; x <= b.hi.x; ++x) {
+          const uint32_t cell = index_.find(internal::Cell{x, y, z});
           if (cell != internal::KeyIndex::kMissing) cells[count++] = cell;
         }
       }
@@ -44,16 +62,16 @@ class HashGrid {
   /// Points in a cell.
   uint32_t cellSize(uint32_t cell) const { return start_[cell + 1] - start_[cell]; }
 
-  /// Calls f(index) for every point of @p cell.
+  /// Calls f(index, point) for every point of @p cell.
   template <typename F>
   void forEachIn(uint32_t cell, F&& f) const {
-    for (uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) f(members_[k]);
+    for (uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) f(members_[k], sorted_[k]);
   }
 
   /// The cell of a point.
   internal::Cell cellOf(const Eigen::Vector3f& p) const { return internal::cellOf(p, inv_cell_); }
 
-  /// Calls f(index) for every point in the cells whose coordinates differ from cell @p c by exactly @p ring in
+  /// Calls f(index, point) for every point in the cells whose coordinates differ from cell @p c by exactly @p ring in
   /// their largest component (ring 0: c itself).
   template <typename F>
   void forEachInRing(const internal::Cell& c, int ring, F&& f) const {
@@ -73,6 +91,7 @@ class HashGrid {
   internal::KeyIndex index_;
   std::vector<uint32_t> start_;
   std::vector<uint32_t> members_;
+  std::vector<Eigen::Vector3f> sorted_;  // points[members_[k]]
 };
 
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
@@ -90,7 +109,10 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   if (!(radius > 0.0)) throw std::invalid_argument("fastEuclideanClustering: radius must be positive");
   if (max_neighbors < 1) throw std::invalid_argument("fastEuclideanClustering: max_neighbors must be >= 1");
   const size_t n = points.size();
-  const HashGrid grid(points, radius);
+  // Cells of 2r: a ball of radius r spans 2 of them per axis, so a query probes 8 cells instead of the 27 of
+  // r-cells, over about the same points on the surfaces that LiDAR samples. Which cells are probed does not change
+  // the neighbours found, only how fast (every point within r lies in them).
+  const HashGrid grid(points, 2.0 * radius);
   const float r2 = static_cast<float>(radius * radius);
   const size_t cap = static_cast<size_t>(max_neighbors);
 
@@ -109,18 +131,28 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   std::iota(parent.begin(), parent.end(), 0u);
   std::vector<uint8_t> reached(n, 0);
   std::vector<std::pair<float, uint32_t>> near;
+  // Consecutive seeds often share a block (points come in scan order): its cells are looked up once.
+  uint32_t cells[27];
+  int num_cells = 0;
+  HashGrid::Block seed_block{};
+  size_t candidates = 0;
+  bool have_cells = false;
   for (uint32_t seed = 0; seed < n; ++seed) {
     if (reached[seed]) continue;  // only points no earlier seed reached become seeds (spec §2)
     const Eigen::Vector3f& p = points[seed];
     near.clear();
-    const auto consider = [&](uint32_t q) {
-      const float d2 = (points[q] - p).squaredNorm();
+    const auto consider = [&](uint32_t q, const Eigen::Vector3f& point) {
+      const float d2 = (point - p).squaredNorm();
       if (d2 <= r2) near.emplace_back(d2, q);
     };
-    uint32_t cells[27];
-    const int num_cells = grid.nearCells(p, cells);
-    size_t candidates = 0;
-    for (int c = 0; c < num_cells; ++c) candidates += grid.cellSize(cells[c]);
+    const HashGrid::Block block = grid.blockAround(p, 0.5f);
+    if (!have_cells || !(block == seed_block)) {
+      seed_block = block;
+      have_cells = true;
+      num_cells = grid.cellsIn(block, cells);
+      candidates = 0;
+      for (int c = 0; c < num_cells; ++c) candidates += grid.cellSize(cells[c]);
+    }
     bool settled = false;
     if (candidates > dense_count) {
       if (!fine) fine.emplace(points, fine_cell);

@@ -1,10 +1,13 @@
 #include "sgtllc/node_extraction.h"
 
 #include <algorithm>
+#include <cmath>
+#include <exception>
 #include <numeric>
 #include <string>
 
 #include "sgtllc/clustering.h"
+#include "sgtllc/parallel.h"
 
 namespace sgtllc {
 namespace {
@@ -72,8 +75,12 @@ void keepLargest(std::vector<Node>& nodes, const std::vector<size_t>& points, in
 
 }  // namespace
 
-NodeExtractor::NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes)
-    : config_(cluster), label_map_(labels), num_classes_(labels.numClasses()), max_nodes_(max_nodes) {
+NodeExtractor::NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes, int threads)
+    : config_(cluster),
+      label_map_(labels),
+      num_classes_(labels.numClasses()),
+      max_nodes_(max_nodes),
+      threads_(std::max(1, threads)) {
   if (static_cast<int>(config_.classes.size()) != num_classes_ || num_classes_ > kMaxClasses) {
     throw Error("NodeExtractor: cluster parameters for " + std::to_string(config_.classes.size()) + " classes, but " +
                 std::to_string(num_classes_) + " classes (at most " + std::to_string(kMaxClasses) +
@@ -93,12 +100,11 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   // Split by class in two passes so each class cloud is allocated once and keeps the scan's point order.
   std::vector<int8_t> cls(cloud.points.size(), kDropped);
   for (size_t i = 0; i < cloud.points.size(); ++i) {
-    if (!cloud.points[i].allFinite()) {
-      ++stats.nonfinite_points;
-      continue;
-    }
-    if (cloud.points[i].cwiseAbs().maxCoeff() > kMaxCoordinate) {
-      ++stats.far_points;
+    // One test for the usual point (NaN fails it too); only then is the reason told apart.
+    const Eigen::Vector3f& p = cloud.points[i];
+    if (!(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate &&
+          std::abs(p.z()) <= kMaxCoordinate)) {
+      ++(p.allFinite() ? stats.far_points : stats.nonfinite_points);
       continue;
     }
     const uint32_t id = cloud.labels[i];
@@ -115,12 +121,31 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
     if (cls[i] != kDropped) by_class[cls[i]].push_back(cloud.points[i]);
   }
 
+  // Classes are clustered independently (spec §2), so they run in parallel, the largest first; each writes only its
+  // own slot and the merge below is in class order, so the nodes never depend on the thread count.
+  std::vector<std::vector<Cluster>> clusters(static_cast<size_t>(num_classes_));
+  std::vector<int> order(static_cast<size_t>(num_classes_));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return stats.class_points[a] > stats.class_points[b]; });
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(num_classes_));
+  parallelFor(num_classes_, threads_, [&](int k) {
+    const int c = order[k];
+    try {
+      clusters[c] = clusterCentres(by_class[c], config_.classes[c], config_, &stats.clusters[c]);
+    } catch (...) {
+      errors[c] = std::current_exception();  // an unvalidated ClusterConfig; rethrown on the caller's thread
+    }
+  });
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+
   const double dup2 = config_.duplicate_radius * config_.duplicate_radius;
   std::vector<size_t> node_points;  // original points of each accepted node
   for (int c = 0; c < num_classes_; ++c) {
-    const auto clusters = clusterCentres(by_class[c], config_.classes[c], config_, &stats.clusters[c]);
     const size_t first_of_class = result.nodes.size();
-    for (const Cluster& cluster : clusters) {
+    for (const Cluster& cluster : clusters[c]) {
       const Eigen::Vector3d& centre = cluster.centre;
       // Same-class duplicate suppression against the centres accepted so far (spec §2).
       bool duplicate = false;

@@ -1,5 +1,6 @@
 // Node extraction (spec §1–§2): class filtering, per-class minimum sizes, node centres and order, same-class
 // duplicate suppression and bookkeeping, on synthetic labelled clouds.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -225,6 +226,57 @@ TEST(NodeExtractor, MismatchedLengthsThrowAndEmptyCloudGivesNoNodes) {
   EXPECT_TRUE(result.nodes.empty());
   EXPECT_EQ(result.stats.input_points, 0u);
   for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) EXPECT_EQ(result.stats.clusters[c], 0);
+}
+
+TEST(NodeExtractor, SameNodesAndStatsAtAnyThreadCount) {
+  // Every class present, several clusters each, in random point order: classes clustered in parallel (largest
+  // first) must merge back into exactly the single-thread nodes, centres to the bit.
+  LabeledCloud cloud;
+  const uint32_t labels[] = {50, 51, 70, 71, 72, 80, 81};
+  for (int c = 0; c < 7; ++c) {
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3f origin(20.0f * static_cast<float>(k), 10.0f * static_cast<float>(c), 0.0f);
+      if (c == 3 || c == 5 || c == 6) {
+        addRing(&cloud, labels[c], origin, 0.0f, 40 + 10 * k);
+      } else {
+        addGrid(&cloud, labels[c], origin, kX, kZ, 30 + 5 * c, 20);
+      }
+    }
+  }
+  std::mt19937 rng(13);
+  std::vector<size_t> perm(cloud.points.size());
+  for (size_t i = 0; i < perm.size(); ++i) perm[i] = i;
+  std::shuffle(perm.begin(), perm.end(), rng);
+  LabeledCloud shuffled;
+  for (size_t i : perm) {
+    shuffled.points.push_back(cloud.points[i]);
+    shuffled.labels.push_back(cloud.labels[i]);
+  }
+  sgtllc::ClusterConfig config;
+  for (auto& c : config.classes) c.min_size = 5;
+  const auto one = NodeExtractor(config, {}, 0, 1).extract(shuffled);
+  for (int c = 0; c < 7; ++c) ASSERT_GE(one.stats.clusters[c], 3) << c;  // every class clustered
+  for (int threads : {2, 3, 8}) {
+    const auto many = NodeExtractor(config, {}, 0, threads).extract(shuffled);
+    ASSERT_EQ(many.nodes.size(), one.nodes.size()) << threads;
+    for (size_t k = 0; k < one.nodes.size(); ++k) {
+      EXPECT_EQ(many.nodes[k].label, one.nodes[k].label);
+      EXPECT_EQ(many.nodes[k].centre, one.nodes[k].centre);  // bitwise: same sums in the same order
+    }
+    EXPECT_EQ(many.stats.clusters, one.stats.clusters);
+    EXPECT_EQ(many.stats.class_points, one.stats.class_points);
+  }
+}
+
+TEST(NodeExtractor, InvalidClassParametersThrowFromParallelClustering) {
+  // A ClusterConfig that never went through Config::validate: the error of a worker thread reaches the caller.
+  LabeledCloud cloud;
+  addGrid(&cloud, 50, {0, 0, 0}, kX, kZ, 10, 10);
+  addRing(&cloud, 80, {5, 0, 0}, 0.0f, 30);
+  sgtllc::ClusterConfig config;
+  config.classes[5].radius = 0.0;  // pole
+  EXPECT_THROW(NodeExtractor(config, {}, 0, 2).extract(cloud), std::invalid_argument);
+  EXPECT_THROW(NodeExtractor(config, {}, 0, 1).extract(cloud), std::invalid_argument);
 }
 
 }  // namespace

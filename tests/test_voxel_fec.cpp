@@ -302,6 +302,19 @@ TEST(Fec, TiesAtTheCapGoToTheLowerIndex) {
   EXPECT_EQ(fecReference(pts, 1.0, 3, 1), (Clusters{{0, 1, 2}, {3, 4, 5}}));
 }
 
+TEST(Fec, FarFromTheOriginEqualsSpecTransliteration) {
+  // Far from the origin cell coordinates lose float precision: the cells searched around a seed are widened by it,
+  // and must still find exactly the reference's neighbours (and never more cells than the search holds).
+  for (const float offset : {5.0e4f, 9.0e5f}) {
+    for (const double radius : {0.01, 0.3, 1.0}) {
+      Cloud pts = gaussianBlobs(5, 3, 200, static_cast<float>(radius), 4.0f * static_cast<float>(radius));
+      for (auto& p : pts) p += Eigen::Vector3f(offset, -offset, 0.5f * offset);
+      SCOPED_TRACE("offset " + std::to_string(offset) + " radius " + std::to_string(radius));
+      for (int cap : {5, 100}) EXPECT_EQ(fastEuclideanClustering(pts, radius, cap, 1), fecReference(pts, radius, cap, 1));
+    }
+  }
+}
+
 TEST(Fec, EmptyCloud) { EXPECT_TRUE(fastEuclideanClustering({}, 1.0, 100, 1).empty()); }
 
 }  // namespace

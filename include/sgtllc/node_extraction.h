@@ -43,8 +43,10 @@ class NodeExtractor {
   /// have the most original points, ties to the earlier node, in node order; 0 = no limit. Pass
   /// Config::graph.max_nodes so that every scan's graph stays within the limit buildGraph enforces. The classes
   /// are those of @p labels (LabelConfig::numClasses()); throws sgtllc::Error unless @p cluster has one
-  /// ClassClusterConfig per class.
-  NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes = GraphConfig{}.max_nodes);
+  /// ClassClusterConfig per class. Up to @p threads threads cluster the classes in parallel (Config::threads; the
+  /// nodes do not depend on it; inside another parallel region OpenMP runs them on the calling thread).
+  NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes = GraphConfig{}.max_nodes,
+                int threads = 1);
 
   /// Throws sgtllc::Error if points and labels differ in length.
   NodeExtractionResult extract(const LabeledCloud& cloud) const;
@@ -54,6 +56,7 @@ class NodeExtractor {
   LabelMap label_map_;
   int num_classes_;
   int max_nodes_;
+  int threads_;
 };
 
 }  // namespace sgtllc
