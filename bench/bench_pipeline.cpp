@@ -10,6 +10,7 @@
 
 #include "sgtllc/detector.h"
 #include "sgtllc/io/kitti.h"
+#include "sgtllc/retrieval/retrieval_key.h"
 
 namespace {
 
@@ -83,26 +84,45 @@ void BM_ExtractAndDescribe(benchmark::State& state) {
 }
 BENCHMARK(BM_ExtractAndDescribe)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
+std::string keyName(int key) { return key == 0 ? "histogram" : "global"; }
+
 /// Top-15 retrieval in a database the size of KITTI 00 (4541 frames) built from perturbed real node sets.
+/// range(1): 0 brute force, 1 kd-tree; range(2): 0 the distance-histogram key (default), 1 Des^G (G2).
 void BM_Retrieval(benchmark::State& state) {
-  const Config config;
-  Config c = config;
+  Config c;
   c.retrieval.method = static_cast<RetrievalMethod>(state.range(1));
+  c.retrieval.key = state.range(2) == 0 ? RetrievalKey::kDistanceHistogram : RetrievalKey::kGlobalDescriptor;
   std::mt19937 rng(7);
   FrameDatabase db(c.retrieval.method);
   std::vector<std::vector<Node>> base;
   for (int k = 0; k < 4; ++k) base.push_back(nodesOf(k));
   for (int f = 0; f < state.range(0); ++f) {
-    const DescribedFrame d = describeFrame(perturbed(base[f % 4], rng), c.graph, c.descriptor);
-    db.add(StoredFrame{d.graph.nodes, d.global});
+    const SemanticGraph g = buildGraph(perturbed(base[f % 4], rng), c.graph);
+    db.add(StoredFrame{g.nodes, retrieval::computeRetrievalKey(g, c)});
   }
-  const DescribedFrame query = describeFrame(base[1], c.graph, c.descriptor);
+  const std::vector<float> query = retrieval::computeRetrievalKey(buildGraph(base[1], c.graph), c);
   const int last = db.size() - 1;
-  db.query(query.global, last, 15);  // builds the kd-tree outside the timed loop
-  for (auto _ : state) benchmark::DoNotOptimize(db.query(query.global, last, 15));
-  state.SetLabel(state.range(1) == 0 ? "brute_force" : "kdtree");
+  db.query(query, last, 15);  // builds the kd-tree outside the timed loop
+  for (auto _ : state) benchmark::DoNotOptimize(db.query(query, last, 15));
+  state.SetLabel(std::string(state.range(1) == 0 ? "brute_force" : "kdtree") + ", " + keyName(state.range(2)));
 }
-BENCHMARK(BM_Retrieval)->Args({4541, 0})->Args({4541, 1})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Retrieval)
+    ->Args({4541, 0, 0})
+    ->Args({4541, 0, 1})
+    ->Args({4541, 1, 0})
+    ->Args({4541, 1, 1})
+    ->Unit(benchmark::kMicrosecond);
+
+/// Computing a frame's retrieval key from its graph: range(1) as BM_Retrieval's range(2).
+void BM_RetrievalKey(benchmark::State& state) {
+  Config c;
+  c.retrieval.key = state.range(1) == 0 ? RetrievalKey::kDistanceHistogram : RetrievalKey::kGlobalDescriptor;
+  const SemanticGraph g = buildGraph(nodesOf(static_cast<int>(state.range(0))), c.graph);
+  for (auto _ : state) benchmark::DoNotOptimize(retrieval::computeRetrievalKey(g, c));
+  state.counters["nodes"] = g.size();
+  state.SetLabel(std::string(kFrames[state.range(0)]) + ", " + keyName(state.range(1)));
+}
+BENCHMARK(BM_RetrievalKey)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
 /// Verifying 15 candidates of query 4501 as the detector does: rebuilding each candidate's descriptors from its
 /// stored nodes, association, gates, RANSAC, pose. range(0) = 0: the true match 000052 plus 14 other places

@@ -109,6 +109,8 @@ void Config::validate() const {
   checkReal("cluster.duplicate_radius", cluster.duplicate_radius, {0.0}, {100.0});
   checkReal("graph.sigma_d", graph.sigma_d, {0.0, false}, {1000.0});
   checkInt("graph.max_nodes", graph.max_nodes, 1, kMaxGraphNodes);
+  checkInt("retrieval.histogram_bins", retrieval.histogram_bins, 1, 100);
+  checkReal("retrieval.histogram_range", retrieval.histogram_range, {0.0, false}, {1000.0});
   checkInt("retrieval.num_candidates", retrieval.num_candidates, 1, 1000);
   checkInt("retrieval.exclude_recent", retrieval.exclude_recent, 1, kMaxFrames);  // a frame never matches itself
   checkInt("retrieval.warmup_frames", retrieval.warmup_frames, 0, kMaxFrames);

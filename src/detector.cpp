@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "sgtllc/parallel.h"
+#include "sgtllc/retrieval/retrieval_key.h"
 
 namespace sgtllc {
 namespace {
@@ -46,8 +47,9 @@ FrameResult LoopDetector::process(std::vector<Node> nodes) { return processNodes
 FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult result) {
   result.frame = database_.size();
   auto start = Clock::now();
-  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor, /*with_global=*/true,
-                                              config_.numClasses());
+  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
+                                              /*with_global=*/false, config_.numClasses());
+  std::vector<float> key = retrieval::computeRetrievalKey(query.graph, config_);
   result.num_nodes = query.numNodes();
   result.timing.description_ms = msSince(start);
 
@@ -60,7 +62,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   } else if (result.frame < rc.exclude_recent) {
     result.search = Search::kTooRecent;
   } else {
-    retrieved = database_.query(query.global, result.frame - rc.exclude_recent, rc.num_candidates);
+    retrieved = database_.query(key, result.frame - rc.exclude_recent, rc.num_candidates);
   }
   result.timing.retrieval_ms = msSince(start);
 
@@ -86,7 +88,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   result.is_loop = result.best >= 0 && isLoop(result.candidates[result.best].match, config_.verification);
   result.timing.verification_ms = msSince(start);
 
-  database_.add(StoredFrame{query.graph.nodes, query.global});
+  database_.add(StoredFrame{query.graph.nodes, std::move(key)});
   return result;
 }
 

@@ -66,6 +66,8 @@ std::vector<Range> ranges() {
   r.push_back({"cluster.duplicate_radius", {"0", "100"}, {"-0.5", "100.5"}, "[0, 100]"});
   r.push_back({"graph.sigma_d", {"1e-09", "1000"}, {"0", "-3", "1000.5"}, "(0, 1000]"});
   r.push_back({"graph.max_nodes", {"1", "2000"}, {"0", "2001"}, "[1, 2000]"});
+  r.push_back({"retrieval.histogram_bins", {"1", "100"}, {"0", "101"}, "[1, 100]"});
+  r.push_back({"retrieval.histogram_range", {"0.001", "1000"}, {"0", "-1", "1000.5"}, "(0, 1000]"});
   r.push_back({"retrieval.num_candidates", {"1", "1000"}, {"0", "1001", "1000000000"}, "[1, 1000]"});
   r.push_back({"retrieval.exclude_recent", {"1", "1000000"}, {"0", "1000001"}, "[1, 1000000]"});
   r.push_back({"retrieval.warmup_frames", {"0", "1000000"}, {"-1", "1000001"}, "[0, 1000000]"});
@@ -158,7 +160,7 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 8 * 3 + 23 + 18);  // 8 classes incl. vehicle, 23 other keys, 18 backend.* keys
+  EXPECT_EQ(numeric, 8 * 3 + 25 + 18);  // 8 classes incl. vehicle, 25 other keys, 18 backend.* keys
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

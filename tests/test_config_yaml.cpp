@@ -38,6 +38,9 @@ TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
   c.descriptor.order = SubVectorOrder::kCode;
   c.descriptor.global_mode = GlobalMode::kG1;
   c.retrieval.method = RetrievalMethod::kKdTree;
+  c.retrieval.key = RetrievalKey::kGlobalDescriptor;
+  c.retrieval.histogram_bins = 12;
+  c.retrieval.histogram_range = 25.5;
   c.retrieval.warmup_frames = 150;
   c.association.score = NodeScore::kCount;
   c.association.sigma_2 = 3.0;
@@ -61,6 +64,9 @@ TEST(ConfigYaml, EveryChangedFieldRoundTrips) {
   EXPECT_EQ(back.descriptor.order, SubVectorOrder::kCode);
   EXPECT_EQ(back.descriptor.global_mode, GlobalMode::kG1);
   EXPECT_EQ(back.retrieval.method, RetrievalMethod::kKdTree);
+  EXPECT_EQ(back.retrieval.key, RetrievalKey::kGlobalDescriptor);
+  EXPECT_EQ(back.retrieval.histogram_bins, 12);
+  EXPECT_EQ(back.retrieval.histogram_range, 25.5);
   EXPECT_EQ(back.retrieval.warmup_frames, 150);
   EXPECT_EQ(back.association.score, NodeScore::kCount);
   EXPECT_EQ(back.association.sigma_2, 3.0);
@@ -143,9 +149,11 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(io::loadConfig(dir + "mcd.yaml").labels.preset, LabelPreset::kMcd);
   const Config paper = io::loadConfig(dir + "paper.yaml");
   EXPECT_EQ(paper.descriptor.global_mode, GlobalMode::kG1);
+  EXPECT_EQ(paper.retrieval.key, RetrievalKey::kGlobalDescriptor);  // the paper retrieves by Des^G
   EXPECT_EQ(paper.verification.score_formula, ScoreFormula::kPaper);
   const Config code = io::loadConfig(dir + "authors-code.yaml");
   EXPECT_EQ(code.descriptor.global_mode, GlobalMode::kG2);
+  EXPECT_EQ(code.retrieval.key, RetrievalKey::kGlobalDescriptor);
   EXPECT_EQ(code.verification.score_formula, ScoreFormula::kLegacy);
   EXPECT_EQ(code.verification.ransac_confidence, 1.0);
   const Config objects = io::loadConfig(dir + "kitti00-objects.yaml");

@@ -326,16 +326,21 @@ TEST_F(VehicleRevisit, TooFewNodesWithoutVehiclesALoopWithThem) {
   EXPECT_GE(vehicles, 10);
 }
 
-TEST_F(VehicleRevisit, DetectorStoresGlobalDescriptorsOfTheLargerSize) {
-  Config config = vehicleConfig();
-  config.retrieval.exclude_recent = 1;
-  LoopDetector detector(config);
-  const LabelMap labels(config.labels);
-  detector.process(io::readNodesTxt(path("match.txt"), labels));
-  const FrameResult r = detector.process(io::readNodesTxt(path("query.txt"), labels));
-  EXPECT_EQ(detector.database().globalDimension(), 512);  // G2, C = 8: 8³
-  ASSERT_TRUE(r.is_loop);
-  EXPECT_EQ(r.loop()->frame, 0);
+TEST_F(VehicleRevisit, DetectorStoresRetrievalKeysOfTheLargerSize) {
+  // The default key, the distance histogram, and G2: both grow with the eighth class, and both find the loop.
+  for (RetrievalKey key : {RetrievalKey::kDistanceHistogram, RetrievalKey::kGlobalDescriptor}) {
+    Config config = vehicleConfig();
+    config.retrieval.exclude_recent = 1;
+    config.retrieval.key = key;
+    LoopDetector detector(config);
+    const LabelMap labels(config.labels);
+    detector.process(io::readNodesTxt(path("match.txt"), labels));
+    const FrameResult r = detector.process(io::readNodesTxt(path("query.txt"), labels));
+    // Histogram: 36 class pairs × 10 bins; G2, C = 8: 8³.
+    EXPECT_EQ(detector.database().globalDimension(), key == RetrievalKey::kGlobalDescriptor ? 512 : 360);
+    ASSERT_TRUE(r.is_loop);
+    EXPECT_EQ(r.loop()->frame, 0);
+  }
 }
 
 TEST_F(VehicleRevisit, PairJsonNamesTheVehicleMatches) {

@@ -258,6 +258,14 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(choice<GlobalMode>("descriptor.global_mode", "global descriptor (spec §5)",
                                  [](Config& c) -> GlobalMode& { return c.descriptor.global_mode; },
                                  {{"G1", GlobalMode::kG1}, {"G2", GlobalMode::kG2}, {"G3", GlobalMode::kG3}}));
+  f.push_back(choice<RetrievalKey>("retrieval.key", "stored, searched key: class-pair distance histogram or Des^G",
+                                   [](Config& c) -> RetrievalKey& { return c.retrieval.key; },
+                                   {{"histogram", RetrievalKey::kDistanceHistogram},
+                                    {"global", RetrievalKey::kGlobalDescriptor}}));
+  f.push_back(integer<int>("retrieval.histogram_bins", "distance-histogram bins per class pair",
+                           [](Config& c) -> int& { return c.retrieval.histogram_bins; }));
+  f.push_back(number("retrieval.histogram_range", "distances the histogram covers (m)",
+                     [](Config& c) -> double& { return c.retrieval.histogram_range; }));
   f.push_back(integer<int>("retrieval.num_candidates", "K: candidates retrieved per query",
                       [](Config& c) -> int& { return c.retrieval.num_candidates; }));
   f.push_back(integer<int>("retrieval.exclude_recent", "G: query q searches frames <= q - G",
