@@ -23,6 +23,14 @@ namespace sgtllc::python {
 
 namespace py = pybind11;
 
+/// An argument that numpy.asarray accepts (an array, a nested list, ...), taken as it is and checked by the
+/// *FromArray functions below, so a wrong shape is their ValueError rather than pybind11's TypeError. Signatures
+/// show it as numpy.typing.ArrayLike.
+struct ArrayLike {
+  py::object object;
+  operator py::handle() const { return object; }  // NOLINT: used where a py::handle is expected
+};
+
 /// (N, 3) or (N, 4) float32/float64 points (a 4th column, e.g. intensity, is ignored). With @p drop_nonfinite
 /// false a NaN or Inf coordinate is a ValueError; with true such points are passed on, and the library drops and
 /// counts them (ExtractionStats::nonfinite_points), as the command-line tool does.
@@ -73,3 +81,15 @@ py::array_t<float> pointsToArray(std::vector<Eigen::Vector3f>&& points);
 void requireFile(const std::string& path);
 
 }  // namespace sgtllc::python
+
+namespace pybind11::detail {
+template <>
+struct type_caster<sgtllc::python::ArrayLike> {
+  PYBIND11_TYPE_CASTER(sgtllc::python::ArrayLike, const_name("numpy.typing.ArrayLike"));
+  bool load(handle src, bool) {
+    value.object = reinterpret_borrow<object>(src);
+    return true;
+  }
+  static handle cast(const sgtllc::python::ArrayLike& v, return_value_policy, handle) { return v.object.inc_ref(); }
+};
+}  // namespace pybind11::detail

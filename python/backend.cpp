@@ -16,8 +16,7 @@ using backend::BackendResult;
 using backend::Edge;
 using backend::PoseGraphOptimizer;
 
-std::vector<Node> nodesArg(const py::handle& nodes, const char* name) {
-  const py::tuple t = py::reinterpret_borrow<py::object>(nodes).cast<py::tuple>();
+std::vector<Node> nodesArg(const py::tuple& t, const char* name) {
   if (t.size() != 2) throw py::value_error(std::string(name) + ": expected a (centres, classes) tuple");
   return nodesFromArrays(t[0], t[1], std::string(name) + "_", kMaxClasses);
 }
@@ -37,14 +36,14 @@ void resultTypes(py::module_& m) {
       .def_property_readonly("poses", [](const BackendResult& r) { return posesToArray(r.poses); },
                              "(N, 4, 4) T_world_frame")
       .def_readonly("loops", &BackendResult::loops, "one LoopReport per loop, in the order received")
-      .def_readonly("num_accepted", &BackendResult::num_accepted)
-      .def_readonly("num_rejected", &BackendResult::num_rejected)
-      .def_readonly("solves", &BackendResult::solves)
-      .def_readonly("iterations", &BackendResult::iterations)
-      .def_readonly("final_cost", &BackendResult::final_cost)
-      .def_readonly("converged", &BackendResult::converged)
-      .def_readonly("reduced", &BackendResult::reduced)
-      .def_readonly("num_poses_solved", &BackendResult::num_poses_solved);
+      .def_readonly("num_accepted", &BackendResult::num_accepted, "loops used by the optimisation")
+      .def_readonly("num_rejected", &BackendResult::num_rejected, "inconsistent + large residual")
+      .def_readonly("solves", &BackendResult::solves, "Ceres solves")
+      .def_readonly("iterations", &BackendResult::iterations, "Levenberg-Marquardt iterations over all solves")
+      .def_readonly("final_cost", &BackendResult::final_cost, "½ Σ ρ(eᵀΩe) of the last solve")
+      .def_readonly("converged", &BackendResult::converged, "every solve met a tolerance")
+      .def_readonly("reduced", &BackendResult::reduced, "from optimize_reduced: the anchors' graph")
+      .def_readonly("num_poses_solved", &BackendResult::num_poses_solved, "poses in the last solve");
 }
 
 }  // namespace
@@ -54,7 +53,7 @@ void bindBackend(py::module_& m) {
       .value("ODOMETRY", backend::EdgeKind::kOdometry)
       .value("LOOP", backend::EdgeKind::kLoop);
   py::class_<Edge>(m, "Edge", "A relative-pose constraint: p_from = T_from_to @ p_to.")
-      .def(py::init([](int from, int to, const py::handle& T, const py::object& information, backend::EdgeKind kind) {
+      .def(py::init([](int from, int to, const ArrayLike& T, const py::object& information, backend::EdgeKind kind) {
              Edge e{from, to, isometryFromArray(T, "T_from_to"), backend::Matrix6d::Identity(), kind};
              if (!information.is_none()) e.information = matrixFromArray(information, "information", 6, 6);
              return e;
@@ -64,19 +63,19 @@ void bindBackend(py::module_& m) {
       .def_readwrite("from_", &Edge::from, "frame whose coordinates the edge maps into (a loop's match frame)")
       .def_readwrite("to", &Edge::to, "the other frame (a loop's query frame)")
       .def_property("T_from_to", [](const Edge& e) { return matrixToArray(e.T_from_to.matrix()); },
-                    [](Edge& e, const py::handle& T) { e.T_from_to = isometryFromArray(T, "T_from_to"); }, "(4, 4)")
+                    [](Edge& e, const ArrayLike& T) { e.T_from_to = isometryFromArray(T, "T_from_to"); }, "(4, 4)")
       .def_readwrite("information", &Edge::information, "(6, 6) over (δt, δθ)")
-      .def_readwrite("kind", &Edge::kind);
+      .def_readwrite("kind", &Edge::kind, "odometry or loop");
   resultTypes(m);
 
   m.def("odometry_information",
-        [](const py::handle& T, const backend::OdometryNoise& noise) {
+        [](const ArrayLike& T, const backend::OdometryNoise& noise) {
           return backend::odometryInformation(isometryFromArray(T, "T_prev_curr"), noise);
         },
         py::arg("T_prev_curr"), py::arg("noise") = backend::OdometryNoise{}, "(6, 6) information of an odometry step.");
   m.def("loop_edge",
-        [](int match_frame, int query_frame, const MatchResult& match, const py::handle& query_nodes,
-           const py::handle& match_nodes, const backend::LoopNoise& noise) {
+        [](int match_frame, int query_frame, const MatchResult& match, const py::tuple& query_nodes,
+           const py::tuple& match_nodes, const backend::LoopNoise& noise) {
           return backend::loopEdge(match_frame, query_frame, match, nodesArg(query_nodes, "query_nodes"),
                                    nodesArg(match_nodes, "match_nodes"), noise);
         },
@@ -96,7 +95,7 @@ void bindBackend(py::module_& m) {
            }),
            py::arg("config") = backend::BackendConfig{}, py::arg("T_world_first") = py::none())
       .def("add_odometry",
-           [](PoseGraphOptimizer& o, const py::handle& T, const py::object& information) {
+           [](PoseGraphOptimizer& o, const ArrayLike& T, const py::object& information) {
              const Eigen::Isometry3d step = isometryFromArray(T, "T_prev_curr");
              if (information.is_none()) return o.addOdometry(step);
              return o.addOdometry(step, matrixFromArray(information, "information", 6, 6));
@@ -109,8 +108,8 @@ void bindBackend(py::module_& m) {
            py::return_value_policy::copy, "Outlier step and optimisation of the full graph.")
       .def("optimize_reduced", &PoseGraphOptimizer::optimizeReduced, py::call_guard<py::gil_scoped_release>(),
            py::return_value_policy::copy, "The same on the reduced graph of the anchors.")
-      .def_property_readonly("num_frames", &PoseGraphOptimizer::numFrames)
-      .def_property_readonly("num_loops", &PoseGraphOptimizer::numLoops)
+      .def_property_readonly("num_frames", &PoseGraphOptimizer::numFrames, "frames added")
+      .def_property_readonly("num_loops", &PoseGraphOptimizer::numLoops, "loops received")
       .def_property_readonly("poses", [](const PoseGraphOptimizer& o) { return posesToArray(o.poses()); },
                              "(N, 4, 4) current estimate T_world_frame")
       .def_property_readonly("result", [](const PoseGraphOptimizer& o) { return o.result(); }, "last optimisation");

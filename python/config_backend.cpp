@@ -47,15 +47,15 @@ void bindBackendConfig(py::module_& m) {
 
   py::class_<BackendConfig>(m, "BackendConfig", "Pose-graph back end settings (backend.*).")
       .def(py::init<>())
-      .def_readwrite("odometry", &BackendConfig::odometry)
-      .def_readwrite("loops", &BackendConfig::loops)
+      .def_readwrite("odometry", &BackendConfig::odometry, "odometry information model (backend.odometry.*)")
+      .def_readwrite("loops", &BackendConfig::loops, "loop information model (backend.loops.*)")
       .def_readwrite("loop_loss", &BackendConfig::loop_loss, "robust loss on loop edges")
       .def_readwrite("loss_scale", &BackendConfig::loss_scale, "a of the loss, in whitened units (σ)")
-      .def_readwrite("consistency", &BackendConfig::consistency)
+      .def_readwrite("consistency", &BackendConfig::consistency, "pairwise loop consistency (backend.consistency.*)")
       .def_readwrite("max_loop_chi2", &BackendConfig::max_loop_chi2, "reject a kept loop whose χ² exceeds this")
       .def_readwrite("max_rejection_rounds", &BackendConfig::max_rejection_rounds, "residual-check rounds")
-      .def_readwrite("solver", &BackendConfig::solver)
-      .def_readwrite("online", &BackendConfig::online)
+      .def_readwrite("solver", &BackendConfig::solver, "solver settings (backend.solver.*)")
+      .def_readwrite("online", &BackendConfig::online, "online re-optimisation (backend.online.*)")
       .def("validate", &BackendConfig::validate, "Raises sgtllc.Error naming the key of a value out of range.");
 }
 

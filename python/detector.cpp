@@ -35,7 +35,7 @@ void bindDetector(py::module_& m) {
       .def(py::init<const Config&>(), py::arg("config") = Config{},
            "Raises ConfigError if the configuration is invalid. The detector keeps a copy of it.")
       .def("process",
-           [](PyLoopDetector& d, const py::handle& points, const py::handle& labels, bool drop_nonfinite) {
+           [](PyLoopDetector& d, const ArrayLike& points, const ArrayLike& labels, bool drop_nonfinite) {
              LabeledCloud cloud = cloudFromArrays(points, labels, "", drop_nonfinite);
              py::gil_scoped_release release;
              std::lock_guard<std::mutex> lock(d.mutex);
@@ -46,7 +46,7 @@ void bindDetector(py::module_& m) {
            "labels (N,) integer raw ids. Returns a FrameResult. A NaN/Inf coordinate raises ValueError unless\n"
            "drop_nonfinite=True, which lets the detector drop and count such points as the CLI does.")
       .def("process_nodes",
-           [](PyLoopDetector& d, const py::handle& centres, const py::handle& classes) {
+           [](PyLoopDetector& d, const ArrayLike& centres, const ArrayLike& classes) {
              std::vector<Node> nodes = nodesFromArrays(centres, classes, "", d.detector.config().numClasses());
              py::gil_scoped_release release;
              std::lock_guard<std::mutex> lock(d.mutex);
@@ -72,7 +72,7 @@ void bindDetector(py::module_& m) {
            py::arg("frame"), "(centres (N, 3) float64, classes (N,) int32) of a stored frame.");
 
   m.def("compare_pair",
-        [](const py::handle& qp, const py::handle& ql, const py::handle& mp, const py::handle& ml,
+        [](const ArrayLike& qp, const ArrayLike& ql, const ArrayLike& mp, const ArrayLike& ml,
            const Config* config, bool drop_nonfinite) {
           const LabeledCloud query = cloudFromArrays(qp, ql, "query_", drop_nonfinite);
           const LabeledCloud match = cloudFromArrays(mp, ml, "match_", drop_nonfinite);
@@ -85,7 +85,7 @@ void bindDetector(py::module_& m) {
         "Is the query scan a revisit of the match scan, and where is it in the match frame? Arrays as in\n"
         "LoopDetector.process; config None = the defaults. Returns a PairResult (what `sgtllc pair` prints).");
   m.def("compare_nodes",
-        [](const py::handle& qc, const py::handle& ql, const py::handle& mc, const py::handle& ml,
+        [](const ArrayLike& qc, const ArrayLike& ql, const ArrayLike& mc, const ArrayLike& ml,
            const Config* config) {
           const Config& c = orDefault(config);
           std::vector<Node> query = nodesFromArrays(qc, ql, "query_", c.numClasses());

@@ -96,7 +96,7 @@ void bindIo(py::module_& m) {
         },
         py::arg("path"), "Reads the Tr line of a KITTI calib.txt (velodyne -> cam0) as a (4, 4) array.");
   m.def("lidar_poses",
-        [](const py::handle& cam_poses, const py::handle& Tr) {
+        [](const ArrayLike& cam_poses, const ArrayLike& Tr) {
           return posesToArray(io::lidarPoses(posesFromArray(cam_poses, "cam_poses"), matrixFromArray(Tr, "Tr", 4, 4)));
         },
         py::arg("cam_poses"), py::arg("Tr"), "LiDAR-frame poses Tr^-1 P_i Tr of (N, 4, 4) cam0 poses.");
@@ -110,7 +110,7 @@ void bindIo(py::module_& m) {
         "Reads a node file (`x y z label` rows, raw ids mapped with config.labels).\n"
         "Returns (centres (N, 3) float64, classes (N,) int32); rows of dropped classes are skipped.");
   m.def("write_nodes",
-        [](const std::string& path, const py::handle& centres, const py::handle& classes, const Config* config,
+        [](const std::string& path, const ArrayLike& centres, const ArrayLike& classes, const Config* config,
            bool overwrite) {
           const LabelConfig labels = config ? config->labels : LabelConfig{};
           const std::vector<Node> nodes = nodesFromArrays(centres, classes, "", labels.numClasses());
@@ -124,10 +124,10 @@ void bindIo(py::module_& m) {
                               "A SemanticKITTI-layout sequence: DIR/velodyne/NAME.bin with DIR/labels/NAME.label.")
       .def(py::init<const std::string&>(), py::arg("dir"),
            "Lists the scans in file-name order; raises sgtllc.Error if velodyne/ is missing or a label is.")
-      .def("__len__", &io::SequenceDir::size)
-      .def_property_readonly("dir", &io::SequenceDir::dir)
-      .def("bin_path", &io::SequenceDir::binPath, py::arg("i"))
-      .def("label_path", &io::SequenceDir::labelPath, py::arg("i"))
+      .def("__len__", &io::SequenceDir::size, "number of scans")
+      .def_property_readonly("dir", &io::SequenceDir::dir, "the folder as given")
+      .def("bin_path", &io::SequenceDir::binPath, py::arg("i"), "DIR/velodyne/NAME.bin of frame i")
+      .def("label_path", &io::SequenceDir::labelPath, py::arg("i"), "DIR/labels/NAME.label of frame i")
       .def("frame_name", &io::SequenceDir::frameName, py::arg("i"), "file stem of frame i ('000052')")
       .def("load",
            [](const io::SequenceDir& s, size_t i) { return readCloud([&] { return s.load(i); }); },

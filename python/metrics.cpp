@@ -12,7 +12,7 @@
 namespace sgtllc::python {
 namespace {
 
-eval::PrCurve prCurve(const py::handle& scores, const py::handle& positives, int positives_override) {
+eval::PrCurve prCurve(const ArrayLike& scores, const ArrayLike& positives, int positives_override) {
   const std::vector<double> s = doublesFromArray(scores, "scores");
   const std::vector<double> p = doublesFromArray(positives, "positives");
   if (p.size() != s.size()) {
@@ -31,24 +31,24 @@ py::array_t<double> toArray(std::vector<double> v) {
 
 void errorTypes(py::module_& m) {
   py::class_<eval::ErrorStats>(m, "ErrorStats", "Summary of a list of errors (all 0 for an empty list).")
-      .def_readonly("rmse", &eval::ErrorStats::rmse)
+      .def_readonly("rmse", &eval::ErrorStats::rmse, "root mean square")
       .def_readonly("mean", &eval::ErrorStats::mean)
-      .def_readonly("median", &eval::ErrorStats::median)
+      .def_readonly("median", &eval::ErrorStats::median, "as numpy: mean of the middle two for an even count")
       .def_readonly("max", &eval::ErrorStats::max)
-      .def_readonly("count", &eval::ErrorStats::count);
+      .def_readonly("count", &eval::ErrorStats::count, "errors summarised");
   py::class_<eval::AteResult>(m, "AteResult", "Absolute trajectory error (m), as evo_ape.")
       .def_readonly("aligned", &eval::AteResult::aligned, "after the rigid (Umeyama, no scale) alignment")
       .def_readonly("unaligned", &eval::AteResult::unaligned, "positions compared as given")
       .def_property_readonly("T_gt_est", [](const eval::AteResult& r) { return matrixToArray(r.T_gt_est.matrix()); },
                              "(4, 4) the alignment");
   py::class_<eval::RpeResult>(m, "RpeResult", "Relative pose error over a fixed frame step, as evo_rpe.")
-      .def_readonly("delta_frames", &eval::RpeResult::delta_frames)
-      .def_readonly("translation_m", &eval::RpeResult::translation_m)
-      .def_readonly("rotation_deg", &eval::RpeResult::rotation_deg);
+      .def_readonly("delta_frames", &eval::RpeResult::delta_frames, "frame step D")
+      .def_readonly("translation_m", &eval::RpeResult::translation_m, "ErrorStats of ‖t(E_i)‖ (m)")
+      .def_readonly("rotation_deg", &eval::RpeResult::rotation_deg, "ErrorStats of angle(E_i) (deg)");
   py::class_<eval::SegmentError>(m, "SegmentError", "The KITTI odometry benchmark's segment error.")
-      .def_readonly("translation_percent", &eval::SegmentError::translation_percent)
-      .def_readonly("rotation_deg_per_100m", &eval::SegmentError::rotation_deg_per_100m)
-      .def_readonly("segments", &eval::SegmentError::segments);
+      .def_readonly("translation_percent", &eval::SegmentError::translation_percent, "mean ‖t(E)‖ / length × 100")
+      .def_readonly("rotation_deg_per_100m", &eval::SegmentError::rotation_deg_per_100m, "mean angle(E) / length")
+      .def_readonly("segments", &eval::SegmentError::segments, "segments evaluated");
 }
 
 }  // namespace
@@ -56,8 +56,8 @@ void errorTypes(py::module_& m) {
 void bindMetrics(py::module_& m) {
   py::class_<eval::PrCurve>(m, "PrCurve", "Precision-recall curve, one point per distinct threshold, as sklearn.")
       .def_property_readonly("thresholds", [](const eval::PrCurve& c) { return toArray(c.thresholds); }, "descending")
-      .def_property_readonly("precision", [](const eval::PrCurve& c) { return toArray(c.precision); })
-      .def_property_readonly("recall", [](const eval::PrCurve& c) { return toArray(c.recall); })
+      .def_property_readonly("precision", [](const eval::PrCurve& c) { return toArray(c.precision); }, "per threshold, then 1")
+      .def_property_readonly("recall", [](const eval::PrCurve& c) { return toArray(c.recall); }, "per threshold, then 0")
       .def_readonly("positives", &eval::PrCurve::positives, "the recall denominator");
   m.def("precision_recall", &prCurve, py::arg("scores"), py::arg("positives"), py::arg("positives_override") = 0,
         "PR curve of (N,) scores against (N,) ground-truth flags (a sample is positive iff score >= threshold);\n"
@@ -74,14 +74,14 @@ void bindMetrics(py::module_& m) {
       .def_readonly("rotation_deg", &eval::PoseError::rotation_deg, "RRE (deg)")
       .def("succeeds", &eval::PoseError::succeeds, py::arg("max_translation_m"), py::arg("max_rotation_deg"));
   m.def("pose_error",
-        [](const py::handle& est, const py::handle& gt) {
+        [](const ArrayLike& est, const ArrayLike& gt) {
           return eval::poseError(matrixFromArray(est, "estimate", 4, 4), matrixFromArray(gt, "ground_truth", 4, 4));
         },
         py::arg("estimate"), py::arg("ground_truth"), "RTE and RRE of a (4, 4) estimate against a (4, 4) ground truth.");
   py::class_<eval::PoseSummary>(m, "PoseSummary", "Success rate and mean errors over successes.")
-      .def_readonly("evaluated", &eval::PoseSummary::evaluated)
-      .def_readonly("successes", &eval::PoseSummary::successes)
-      .def_readonly("success_rate", &eval::PoseSummary::success_rate)
+      .def_readonly("evaluated", &eval::PoseSummary::evaluated, "loops with a pose compared")
+      .def_readonly("successes", &eval::PoseSummary::successes, "RTE and RRE below the bounds")
+      .def_readonly("success_rate", &eval::PoseSummary::success_rate, "successes / evaluated")
       .def_readonly("rte_mean", &eval::PoseSummary::rte_mean, "m")
       .def_readonly("rre_mean", &eval::PoseSummary::rre_mean, "deg");
   m.def("summarise_poses", &eval::summarisePoses, py::arg("errors"), py::arg("max_translation_m") = 2.0,
@@ -89,18 +89,18 @@ void bindMetrics(py::module_& m) {
 
   errorTypes(m);
   m.def("absolute_trajectory_error",
-        [](const py::handle& gt, const py::handle& est) {
+        [](const ArrayLike& gt, const ArrayLike& est) {
           return eval::absoluteTrajectoryError(isometriesFromArray(gt, "ground_truth"), isometriesFromArray(est, "estimate"));
         },
         py::arg("ground_truth"), py::arg("estimate"), "ATE of (N, 4, 4) poses against (N, 4, 4) ground truth.");
   m.def("relative_pose_error",
-        [](const py::handle& gt, const py::handle& est, int delta) {
+        [](const ArrayLike& gt, const ArrayLike& est, int delta) {
           return eval::relativePoseError(isometriesFromArray(gt, "ground_truth"), isometriesFromArray(est, "estimate"),
                                          delta);
         },
         py::arg("ground_truth"), py::arg("estimate"), py::arg("delta_frames") = 1, "RPE over pairs (i, i + delta).");
   m.def("kitti_segment_error",
-        [](const py::handle& gt, const py::handle& est, std::vector<double> lengths, int step) {
+        [](const ArrayLike& gt, const ArrayLike& est, std::vector<double> lengths, int step) {
           return eval::kittiSegmentError(isometriesFromArray(gt, "ground_truth"), isometriesFromArray(est, "estimate"),
                                          lengths, step);
         },

@@ -57,9 +57,9 @@ void bindResults(py::module_& m) {
       .def_readonly("capped_nodes", &ExtractionStats::capped_nodes, "nodes dropped above graph.max_nodes");
 
   py::class_<NodeMatch>(m, "NodeMatch", "One association: query node index, match node index, similarity S.")
-      .def_readonly("query", &NodeMatch::query)
-      .def_readonly("match", &NodeMatch::match)
-      .def_readonly("similarity", &NodeMatch::similarity)
+      .def_readonly("query", &NodeMatch::query, "index into the query nodes")
+      .def_readonly("match", &NodeMatch::match, "index into the match nodes")
+      .def_readonly("similarity", &NodeMatch::similarity, "node similarity S (spec §6)")
       .def("__repr__", [](const NodeMatch& a) {
         return "NodeMatch(query=" + std::to_string(a.query) + ", match=" + std::to_string(a.match) + ")";
       });
@@ -69,7 +69,7 @@ void bindResults(py::module_& m) {
       .def_readonly("inliers", &MatchResult::inliers, "indices into associations of the RANSAC inliers")
       .def_readonly("score_c", &MatchResult::score_c, "|LA| / M")
       .def_readonly("score_t", &MatchResult::score_t, "loop score; 0 unless rejection is NONE")
-      .def_readonly("rejection", &MatchResult::rejection)
+      .def_readonly("rejection", &MatchResult::rejection, "why score_t is 0, or NONE")
       .def_readonly("T_match_query", &MatchResult::T_match_query, "(4, 4): p_match = T_match_query @ p_query")
       .def_property_readonly("association_pairs", [](const MatchResult& r) { return pairsArray(r, nullptr); },
                              "(K, 2) int32: query node, match node of every association")
@@ -83,13 +83,13 @@ void bindResults(py::module_& m) {
 
   py::class_<FrameResult>(m, "FrameResult", "What the detector found for one frame.")
       .def_readonly("frame", &FrameResult::frame, "index of this frame (0, 1, 2, ... in processing order)")
-      .def_readonly("num_nodes", &FrameResult::num_nodes)
-      .def_readonly("extraction", &FrameResult::extraction)
-      .def_readonly("search", &FrameResult::search)
+      .def_readonly("num_nodes", &FrameResult::num_nodes, "nodes of this frame")
+      .def_readonly("extraction", &FrameResult::extraction, "point bookkeeping (zeros when nodes were given)")
+      .def_readonly("search", &FrameResult::search, "whether the database was searched, or why not")
       .def_readonly("candidates", &FrameResult::candidates, "retrieved candidates in ascending frame index")
       .def_readonly("best", &FrameResult::best, "index into candidates of the highest score_t, or -1")
       .def_readonly("is_loop", &FrameResult::is_loop, "candidates[best].match.score_t > σ_4")
-      .def_readonly("timing", &FrameResult::timing)
+      .def_readonly("timing", &FrameResult::timing, "stage times of this frame")
       .def_property_readonly("loop", &FrameResult::loop, py::return_value_policy::reference_internal,
                              "the loop-closing Candidate, or None")
       .def_property_readonly("match_frame", [](const FrameResult& r) { return best(r) ? best(r)->frame : -1; },
@@ -105,9 +105,9 @@ void bindResults(py::module_& m) {
   py::class_<PairResult>(m, "PairResult", "Result of comparing two frames directly.")
       .def_readonly("match", &PairResult::match, "MatchResult (query -> match)")
       .def_readonly("is_loop", &PairResult::is_loop, "score_t > σ_4")
-      .def_readonly("extraction_query", &PairResult::extraction_query)
-      .def_readonly("extraction_match", &PairResult::extraction_match)
-      .def_readonly("timing", &PairResult::timing)
+      .def_readonly("extraction_query", &PairResult::extraction_query, "point bookkeeping of the query scan")
+      .def_readonly("extraction_match", &PairResult::extraction_match, "point bookkeeping of the match scan")
+      .def_readonly("timing", &PairResult::timing, "both frames' extraction and description; verification")
       .def_property_readonly("query_nodes", [](const PairResult& r) { return nodesToArrays(r.query_nodes); },
                              "(centres (M, 3) float64, classes (M,) int32) that NodeMatch.query indexes")
       .def_property_readonly("match_nodes", [](const PairResult& r) { return nodesToArrays(r.match_nodes); },
