@@ -125,3 +125,21 @@ def test_config_is_used(pair):
     config.verification.sigma_4 = 0.99
     r = sgtllc.compare_pair(*pair, config=config)
     assert not r.is_loop and r.score_t == sgtllc.compare_pair(*pair).score_t
+
+
+def test_threads_share_the_module(pair):
+    # The GIL is released inside the calls: concurrent calls must give the serial result, and two threads on one
+    # detector are serialised by its lock (frames get distinct indices, nothing is lost).
+    from concurrent.futures import ThreadPoolExecutor
+
+    expected = sgtllc.compare_pair(*pair)
+    with ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(lambda _: sgtllc.compare_pair(*pair), range(4)))
+    for r in results:
+        assert r.score_t == expected.score_t
+        np.testing.assert_array_equal(r.T_match_query, expected.T_match_query)
+    detector = sgtllc.LoopDetector()
+    qp, ql, _, _ = pair
+    with ThreadPoolExecutor(2) as pool:
+        frames = sorted(pool.map(lambda _: detector.process(qp, ql).frame, range(4)))
+    assert frames == [0, 1, 2, 3] and detector.num_frames == 4
