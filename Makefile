@@ -10,7 +10,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_HARNESSES ?=
 TARGETS ?=
 # Debug keeps assertions (Eigen's index checks among them); cmake/SgtllcSanitize.cmake then compiles at -O1.
-CLANG_FLAGS = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DSGTLLC_BUILD_BENCH=OFF \
+CLANG_FLAGS = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DSGTLLC_BUILD_BENCH=OFF -DSGTLLC_BUILD_PYTHON=OFF \
   -DSGTLLC_BUILD_EXAMPLES=OFF
 SGTLLC = $(BUILD)/apps/sgtllc/sgtllc
 KITTI = data/kitti/00/velodyne

@@ -1,0 +1,18 @@
+// Private to the Python module: one function per concept adds its classes and functions to the module.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace sgtllc::python {
+
+namespace py = pybind11;
+
+void bindConfig(py::module_& m);         // config.cpp: Config and its sections, enums, YAML
+void bindBackendConfig(py::module_& m);  // config_backend.cpp: BackendConfig and its sections
+void bindResults(py::module_& m);        // results.cpp: MatchResult, FrameResult, PairResult, stage times
+void bindDetector(py::module_& m);       // detector.cpp: LoopDetector, compare_pair, compare_nodes
+void bindIo(py::module_& m);             // io.cpp: KITTI, PCD, node files, poses, calib, sequence folders
+void bindMetrics(py::module_& m);        // metrics.cpp: PR curve, F1max, EP, pose and trajectory errors
+void bindBackend(py::module_& m);        // backend.cpp: the pose-graph optimiser
+
+}  // namespace sgtllc::python

@@ -1,0 +1,101 @@
+// LoopDetector, compare_pair and compare_nodes (include/sgtllc/detector.h). Arrays are checked and converted
+// with the GIL held; the library call itself runs with the GIL released, so other Python threads keep running.
+#include <memory>
+#include <mutex>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "opaque.h"
+#include "sgtllc/detector.h"
+
+namespace sgtllc::python {
+namespace {
+
+/// The C++ detector is not thread-safe; with the GIL released, two Python threads could enter it at once, so
+/// each call holds the detector's own lock.
+struct PyLoopDetector {
+  explicit PyLoopDetector(const Config& config) : detector(config) {}
+  LoopDetector detector;
+  std::mutex mutex;
+};
+
+const Config& orDefault(const Config* config) {
+  static const Config defaults;
+  return config ? *config : defaults;
+}
+
+}  // namespace
+
+void bindDetector(py::module_& m) {
+  py::class_<PyLoopDetector>(m, "LoopDetector",
+                             "Online SGT-LLC: each processed frame is described, queried against the frames at\n"
+                             "least retrieval.exclude_recent older, verified and then stored.")
+      .def(py::init<const Config&>(), py::arg("config") = Config{},
+           "Raises ConfigError if the configuration is invalid. The detector keeps a copy of it.")
+      .def("process",
+           [](PyLoopDetector& d, const ArrayLike& points, const ArrayLike& labels, bool drop_nonfinite) {
+             LabeledCloud cloud = cloudFromArrays(points, labels, "", drop_nonfinite);
+             py::gil_scoped_release release;
+             std::lock_guard<std::mutex> lock(d.mutex);
+             return d.detector.process(cloud);
+           },
+           py::arg("points"), py::arg("labels"), py::arg("drop_nonfinite") = false,
+           "Processes a labelled scan: points (N, 3) or (N, 4) float (sensor frame, m; a 4th column is ignored),\n"
+           "labels (N,) integer raw ids. Returns a FrameResult. A NaN/Inf coordinate raises ValueError unless\n"
+           "drop_nonfinite=True, which lets the detector drop and count such points as the CLI does.")
+      .def("process_nodes",
+           [](PyLoopDetector& d, const ArrayLike& centres, const ArrayLike& classes) {
+             std::vector<Node> nodes = nodesFromArrays(centres, classes, "", d.detector.config().numClasses());
+             py::gil_scoped_release release;
+             std::lock_guard<std::mutex> lock(d.mutex);
+             return d.detector.process(std::move(nodes));
+           },
+           py::arg("centres"), py::arg("classes"),
+           "Processes a frame given as ready-made nodes: centres (N, 3) float (m), classes (N,) integer stable\n"
+           "class indices 0..C-1. More than graph.max_nodes nodes raise sgtllc.Error; the frame is then not stored.")
+      .def("first_searched_frame", [](PyLoopDetector& d) { return d.detector.firstSearchedFrame(); },
+           "Index of the first frame whose query searches the database.")
+      .def_property_readonly("num_frames", [](PyLoopDetector& d) { return d.detector.numFrames(); },
+                             "frames processed so far")
+      .def_property_readonly("config", [](PyLoopDetector& d) { return d.detector.config(); },
+                             "a copy of the detector's configuration")
+      .def("nodes",
+           [](PyLoopDetector& d, int frame) {
+             if (frame < 0 || frame >= d.detector.numFrames()) {
+               throw py::index_error("frame " + std::to_string(frame) + " is not in 0.." +
+                                     std::to_string(d.detector.numFrames() - 1));
+             }
+             return nodesToArrays(d.detector.database().nodes(frame));
+           },
+           py::arg("frame"), "(centres (N, 3) float64, classes (N,) int32) of a stored frame.");
+
+  m.def("compare_pair",
+        [](const ArrayLike& qp, const ArrayLike& ql, const ArrayLike& mp, const ArrayLike& ml,
+           const Config* config, bool drop_nonfinite) {
+          const LabeledCloud query = cloudFromArrays(qp, ql, "query_", drop_nonfinite);
+          const LabeledCloud match = cloudFromArrays(mp, ml, "match_", drop_nonfinite);
+          const Config& c = orDefault(config);
+          py::gil_scoped_release release;
+          return comparePair(query, match, c);
+        },
+        py::arg("query_points"), py::arg("query_labels"), py::arg("match_points"), py::arg("match_labels"),
+        py::arg("config") = py::none(), py::arg("drop_nonfinite") = false,
+        "Is the query scan a revisit of the match scan, and where is it in the match frame? Arrays as in\n"
+        "LoopDetector.process; config None = the defaults. Returns a PairResult (what `sgtllc pair` prints).");
+  m.def("compare_nodes",
+        [](const ArrayLike& qc, const ArrayLike& ql, const ArrayLike& mc, const ArrayLike& ml,
+           const Config* config) {
+          const Config& c = orDefault(config);
+          std::vector<Node> query = nodesFromArrays(qc, ql, "query_", c.numClasses());
+          std::vector<Node> match = nodesFromArrays(mc, ml, "match_", c.numClasses());
+          py::gil_scoped_release release;
+          return comparePair(std::move(query), std::move(match), c);
+        },
+        py::arg("query_centres"), py::arg("query_classes"), py::arg("match_centres"), py::arg("match_classes"),
+        py::arg("config") = py::none(),
+        "compare_pair for ready-made node sets: centres (N, 3) float, classes (N,) integer class indices.");
+}
+
+}  // namespace sgtllc::python

@@ -1,0 +1,137 @@
+// File readers (include/sgtllc/io/): KITTI scans, labels, poses and calib, PCD, node files, sequence folders.
+// A missing file raises FileNotFoundError; a malformed one sgtllc.Error naming the file (and line) and the problem.
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "opaque.h"
+#include "sgtllc/io/kitti.h"
+#include "sgtllc/io/nodes.h"
+#include "sgtllc/io/pcd.h"
+#include "sgtllc/io/sequence.h"
+
+namespace sgtllc::python {
+namespace {
+
+/// (N, 4) float32 x, y, z, intensity: the layout of the file, as np.fromfile(path, np.float32).reshape(-1, 4).
+py::array_t<float> kittiBin(const std::string& path) {
+  requireFile(path);
+  std::vector<float> intensity;
+  std::vector<Eigen::Vector3f> points;
+  {
+    py::gil_scoped_release release;
+    points = io::readKittiBin(path, &intensity);
+  }
+  std::vector<float> xyzi(points.size() * 4);
+  for (size_t i = 0; i < points.size(); ++i) {
+    for (int k = 0; k < 3; ++k) xyzi[4 * i + k] = points[i][k];
+    xyzi[4 * i + 3] = intensity[i];
+  }
+  return vectorToArray(std::move(xyzi), {static_cast<py::ssize_t>(points.size()), 4});
+}
+
+py::array_t<uint32_t> labelsArray(std::vector<uint32_t>&& labels) {
+  const auto n = static_cast<py::ssize_t>(labels.size());
+  return vectorToArray(std::move(labels), {n});
+}
+
+/// (points (N, 3) float32, labels (N,) uint32) of the scan @p read returns; the read runs without the GIL.
+template <class Read>
+py::tuple readCloud(const Read& read) {
+  LabeledCloud cloud;
+  {
+    py::gil_scoped_release release;
+    cloud = read();
+  }
+  return py::make_tuple(pointsToArray(std::move(cloud.points)), labelsArray(std::move(cloud.labels)));
+}
+
+}  // namespace
+
+void bindIo(py::module_& m) {
+  m.def("read_kitti_bin", &kittiBin, py::arg("path"),
+        "Reads a KITTI velodyne scan as an (N, 4) float32 array: x, y, z (m), intensity.");
+  m.def("read_labels",
+        [](const std::string& path) {
+          requireFile(path);
+          std::vector<uint32_t> labels;
+          {
+            py::gil_scoped_release release;
+            labels = io::readLabelFile(path);
+          }
+          return labelsArray(std::move(labels));
+        },
+        py::arg("path"),
+        "Reads a SemanticKITTI .label file as an (N,) uint32 array (semantic id = low 16 bits, instance = high 16).");
+  m.def("default_label_path", &io::defaultLabelPath, py::arg("bin_path"),
+        "The label file of a scan: DIR/../labels/NAME.label if it exists, else DIR/NAME.label.");
+  m.def("read_labeled_scan",
+        [](const std::string& bin_path, const std::string& label_path) {
+          const std::string labels = label_path.empty() ? io::defaultLabelPath(bin_path) : label_path;
+          requireFile(bin_path);
+          requireFile(labels);
+          return readCloud([&] { return io::readLabeledScan(bin_path, labels); });
+        },
+        py::arg("bin_path"), py::arg("label_path") = "",
+        "Reads a scan and its labels (default: default_label_path) and checks that the counts agree.\n"
+        "Returns (points (N, 3) float32, labels (N,) uint32).");
+  m.def("read_pcd",
+        [](const std::string& path, const std::string& label_field) {
+          requireFile(path);
+          return readCloud([&] { return io::readPcd(path, label_field); });
+        },
+        py::arg("path"), py::arg("label_field") = "label",
+        "Reads x, y, z and a label field of a PCD file (ascii, binary or binary_compressed).\n"
+        "Returns (points (N, 3) float32, labels (N,) uint32).");
+  m.def("read_poses",
+        [](const std::string& path) {
+          requireFile(path);
+          return posesToArray(io::readKittiPoses(path));
+        },
+        py::arg("path"), "Reads KITTI odometry poses (cam0 of frame i in cam0 of frame 0) as an (N, 4, 4) array.");
+  m.def("read_calib",
+        [](const std::string& path) {
+          requireFile(path);
+          return matrixToArray(io::readKittiCalibTr(path));
+        },
+        py::arg("path"), "Reads the Tr line of a KITTI calib.txt (velodyne -> cam0) as a (4, 4) array.");
+  m.def("lidar_poses",
+        [](const ArrayLike& cam_poses, const ArrayLike& Tr) {
+          return posesToArray(io::lidarPoses(posesFromArray(cam_poses, "cam_poses"), matrixFromArray(Tr, "Tr", 4, 4)));
+        },
+        py::arg("cam_poses"), py::arg("Tr"), "LiDAR-frame poses Tr^-1 P_i Tr of (N, 4, 4) cam0 poses.");
+  m.def("read_nodes",
+        [](const std::string& path, const Config* config) {
+          requireFile(path);
+          const LabelMap labels(config ? config->labels : LabelConfig{});
+          return nodesToArrays(io::readNodesTxt(path, labels));
+        },
+        py::arg("path"), py::arg("config") = py::none(),
+        "Reads a node file (`x y z label` rows, raw ids mapped with config.labels).\n"
+        "Returns (centres (N, 3) float64, classes (N,) int32); rows of dropped classes are skipped.");
+  m.def("write_nodes",
+        [](const std::string& path, const ArrayLike& centres, const ArrayLike& classes, const Config* config,
+           bool overwrite) {
+          const LabelConfig labels = config ? config->labels : LabelConfig{};
+          const std::vector<Node> nodes = nodesFromArrays(centres, classes, "", labels.numClasses());
+          io::writeNodesTxt(path, nodes, labels, overwrite ? io::Overwrite::kReplace : io::Overwrite::kRefuse);
+        },
+        py::arg("path"), py::arg("centres"), py::arg("classes"), py::arg("config") = py::none(),
+        py::arg("overwrite") = false,
+        "Writes a node file that read_nodes reads back exactly. An existing file raises unless overwrite=True.");
+
+  py::class_<io::SequenceDir>(m, "SequenceDir",
+                              "A SemanticKITTI-layout sequence: DIR/velodyne/NAME.bin with DIR/labels/NAME.label.")
+      .def(py::init<const std::string&>(), py::arg("dir"),
+           "Lists the scans in file-name order; raises sgtllc.Error if velodyne/ is missing or a label is.")
+      .def("__len__", &io::SequenceDir::size, "number of scans")
+      .def_property_readonly("dir", &io::SequenceDir::dir, "the folder as given")
+      .def("bin_path", &io::SequenceDir::binPath, py::arg("i"), "DIR/velodyne/NAME.bin of frame i")
+      .def("label_path", &io::SequenceDir::labelPath, py::arg("i"), "DIR/labels/NAME.label of frame i")
+      .def("frame_name", &io::SequenceDir::frameName, py::arg("i"), "file stem of frame i ('000052')")
+      .def("load",
+           [](const io::SequenceDir& s, size_t i) { return readCloud([&] { return s.load(i); }); },
+           py::arg("i"), "Reads frame i: (points (N, 3) float32, labels (N,) uint32).");
+}
+
+}  // namespace sgtllc::python

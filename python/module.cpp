@@ -1,0 +1,54 @@
+// The `sgtllc` Python module (issue 11): a thin mirror of the C++ library, numpy in and out.
+//
+// Exceptions: sgtllc::Error (bad input data or configuration) becomes sgtllc.Error, a ValueError; its subclass
+// sgtllc::ConfigError becomes sgtllc.ConfigError, whose `key` attribute is the YAML key of the offending field
+// (`verification.sigma_4`).
+#include <pybind11/pybind11.h>
+
+#include "bindings.h"
+#include "sgtllc/config.h"
+
+namespace py = pybind11;
+
+namespace {
+
+PyObject* g_error = nullptr;
+PyObject* g_config_error = nullptr;
+
+void translate(std::exception_ptr p) {
+  try {
+    if (p) std::rethrow_exception(p);
+  } catch (const sgtllc::ConfigError& e) {
+    py::object error = py::reinterpret_borrow<py::object>(g_config_error)(e.what());
+    error.attr("key") = e.key();
+    PyErr_SetObject(g_config_error, error.ptr());
+  } catch (const sgtllc::Error& e) {
+    PyErr_SetString(g_error, e.what());
+  }
+}
+
+}  // namespace
+
+PYBIND11_MODULE(sgtllc, m) {
+  m.doc() =
+      "sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC), the Python mirror of the C++ library.\n\n"
+      "Points are (N, 3) or (N, 4) float arrays in the sensor frame (metres), labels (N,) integer raw ids,\n"
+      "poses (4, 4) float64 arrays; T_match_query maps query-frame points into the match frame.";
+  g_error = PyErr_NewExceptionWithDoc("sgtllc.Error", "Bad input data or configuration (sgtllc::Error).",
+                                      PyExc_ValueError, nullptr);
+  g_config_error = PyErr_NewExceptionWithDoc(
+      "sgtllc.ConfigError", "A configuration value out of range; `key` is its YAML key (sgtllc::ConfigError).",
+      g_error, nullptr);
+  m.attr("Error") = py::reinterpret_borrow<py::object>(g_error);
+  m.attr("ConfigError") = py::reinterpret_borrow<py::object>(g_config_error);
+  py::register_exception_translator(translate);
+
+  m.attr("__version__") = SGTLLC_VERSION;
+  sgtllc::python::bindConfig(m);
+  sgtllc::python::bindBackendConfig(m);
+  sgtllc::python::bindResults(m);
+  sgtllc::python::bindDetector(m);
+  sgtllc::python::bindIo(m);
+  sgtllc::python::bindMetrics(m);
+  sgtllc::python::bindBackend(m);
+}

@@ -1,0 +1,335 @@
+"""Type stubs of the sgtllc module (python/*.cpp). One line per bound field: keep them in step with the bindings."""
+from __future__ import annotations
+
+from enum import Enum
+from typing import Iterator, MutableMapping, MutableSequence, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+ArrayLike = npt.ArrayLike
+Nodes = Tuple[np.ndarray, np.ndarray]  # (centres (N, 3) float64, classes (N,) int32)
+
+class Error(ValueError): ...
+class ConfigError(Error):
+    key: str
+
+# --- configuration (config.cpp, config_backend.cpp) ---
+class LabelPreset(Enum):
+    SEMANTIC_KITTI_RAW: int; SEMANTIC_KITTI_LEARNING: int; MULRAN: int; MCD: int; CUSTOM: int
+class CentreSource(Enum):
+    POINTS: int; VOXELS: int
+class SubVectorOrder(Enum):
+    PAPER: int; CODE: int
+class GlobalMode(Enum):
+    G1: int; G2: int; G3: int
+class SubVectorKind(Enum):
+    DOT_PRODUCTS: int; ANGLES: int; LENGTHS: int
+class RetrievalMethod(Enum):
+    BRUTE_FORCE: int; KD_TREE: int
+class NodeScore(Enum):
+    RATIO: int; COUNT: int
+class ScoreFormula(Enum):
+    PAPER: int; LEGACY: int; OVERLAP: int
+class RobustLoss(Enum):
+    NONE: int; HUBER: int; CAUCHY: int
+
+class ExtraClass:
+    name: str
+    ids: Tuple[int, ...]
+    def __init__(self, name: str, ids: Sequence[int] = ...) -> None: ...
+class ExtraClassList(MutableSequence[ExtraClass]): ...
+class CustomLabelMap(MutableMapping[int, int]): ...
+class LabelConfig:
+    preset: LabelPreset
+    custom_map: CustomLabelMap
+    extra_classes: ExtraClassList
+    def num_classes(self) -> int: ...
+    def class_name(self, c: int) -> str: ...
+class ClassClusterConfig:
+    voxel: float
+    radius: float
+    min_size: int
+    def __init__(self, voxel: float = 0.0, radius: float = 1.0, min_size: int = 20) -> None: ...
+class ClassClusterConfigList(MutableSequence[ClassClusterConfig]): ...
+class ClusterConfig:
+    classes: ClassClusterConfigList
+    max_neighbors: int
+    duplicate_radius: float
+    centre: CentreSource
+class GraphConfig:
+    sigma_d: float
+    max_nodes: int
+    allow_k_equals_i: bool
+class DescriptorConfig:
+    kind: SubVectorKind
+    order: SubVectorOrder
+    global_mode: GlobalMode
+class RetrievalConfig:
+    num_candidates: int
+    exclude_recent: int
+    warmup_frames: int
+    method: RetrievalMethod
+class AssociationConfig:
+    sigma_1: float
+    max_delta_aj: float
+    sigma_2: float
+    score: NodeScore
+    entries: int
+class VerificationConfig:
+    sigma_3: float
+    min_associations: int
+    ransac_iterations: int
+    ransac_sample_size: int
+    sample_with_replacement: bool
+    inlier_threshold: float
+    min_inliers: int
+    min_inlier_fraction: float
+    ransac_confidence: float
+    score_formula: ScoreFormula
+    use_ransac: bool
+    sigma_4: float
+    seed: int
+class OdometryNoise:
+    translation_sigma_per_m: float
+    translation_sigma_min: float
+    rotation_sigma_per_m: float
+    rotation_sigma_per_rad: float
+    rotation_sigma_min: float
+class LoopNoise:
+    sigma_min: float
+    information_scale: float
+class LoopConsistency:
+    translation_m: float
+    translation_per_m: float
+    rotation_rad: float
+    rotation_per_m: float
+class SolverSettings:
+    num_threads: int
+    max_iterations: int
+    function_tolerance: float
+    parameter_tolerance: float
+    reduced_warm_start: bool
+class OnlineSettings:
+    reduced_graph: bool
+class BackendConfig:
+    odometry: OdometryNoise
+    loops: LoopNoise
+    loop_loss: RobustLoss
+    loss_scale: float
+    consistency: LoopConsistency
+    max_loop_chi2: float
+    max_rejection_rounds: int
+    solver: SolverSettings
+    online: OnlineSettings
+    def validate(self) -> None: ...
+class Config:
+    labels: LabelConfig
+    cluster: ClusterConfig
+    graph: GraphConfig
+    descriptor: DescriptorConfig
+    retrieval: RetrievalConfig
+    association: AssociationConfig
+    verification: VerificationConfig
+    threads: int
+    backend: BackendConfig
+    def num_classes(self) -> int: ...
+    def add_class(self, extra: ExtraClass, cluster: ClassClusterConfig = ...) -> int: ...
+    def validate(self) -> None: ...
+    @staticmethod
+    def from_yaml(path: str) -> Config: ...
+    @staticmethod
+    def from_yaml_string(yaml: str, source: str = "<config>") -> Config: ...
+    def to_yaml(self) -> str: ...
+
+# --- results (results.cpp) ---
+class Rejection(Enum):
+    NONE: int; FEW_ASSOCIATIONS: int; RANSAC_FAILED: int
+class Search(Enum):
+    SEARCHED: int; TOO_RECENT: int; WARMUP: int
+class StageTimes:
+    extraction_ms: float
+    description_ms: float
+    retrieval_ms: float
+    verification_ms: float
+    total_ms: float
+class ExtractionStats:
+    input_points: int
+    nonfinite_points: int
+    far_points: int
+    unknown_label_points: int
+    class_points: list[int]
+    clusters: list[int]
+    duplicates_suppressed: int
+    capped_nodes: int
+class NodeMatch:
+    query: int
+    match: int
+    similarity: float
+class MatchResult:
+    associations: list[NodeMatch]
+    inliers: list[int]
+    score_c: float
+    score_t: float
+    rejection: Rejection
+    T_match_query: np.ndarray  # (4, 4) float64, read-only view
+    association_pairs: np.ndarray  # (K, 2) int32
+    inlier_pairs: np.ndarray  # (n_in, 2) int32
+class Candidate:
+    frame: int
+    distance2: float
+    match: MatchResult
+class FrameResult:
+    frame: int
+    num_nodes: int
+    extraction: ExtractionStats
+    search: Search
+    candidates: list[Candidate]
+    best: int
+    is_loop: bool
+    timing: StageTimes
+    loop: Optional[Candidate]
+    match_frame: int
+    score_t: float
+    score_c: float
+    T_match_query: np.ndarray
+class PairResult:
+    match: MatchResult
+    is_loop: bool
+    extraction_query: ExtractionStats
+    extraction_match: ExtractionStats
+    timing: StageTimes
+    query_nodes: Nodes
+    match_nodes: Nodes
+    score_t: float
+    score_c: float
+    rejection: Rejection
+    T_match_query: np.ndarray
+
+# --- detector (detector.cpp) ---
+class LoopDetector:
+    num_frames: int
+    config: Config
+    def __init__(self, config: Config = ...) -> None: ...
+    def process(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> FrameResult: ...
+    def process_nodes(self, centres: ArrayLike, classes: ArrayLike) -> FrameResult: ...
+    def first_searched_frame(self) -> int: ...
+    def nodes(self, frame: int) -> Nodes: ...
+def compare_pair(query_points: ArrayLike, query_labels: ArrayLike, match_points: ArrayLike, match_labels: ArrayLike,
+                 config: Optional[Config] = None, drop_nonfinite: bool = False) -> PairResult: ...
+def compare_nodes(query_centres: ArrayLike, query_classes: ArrayLike, match_centres: ArrayLike,
+                  match_classes: ArrayLike, config: Optional[Config] = None) -> PairResult: ...
+
+# --- readers (io.cpp) ---
+def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32
+def read_labels(path: str) -> np.ndarray: ...  # (N,) uint32
+def default_label_path(bin_path: str) -> str: ...
+def read_labeled_scan(bin_path: str, label_path: str = "") -> Tuple[np.ndarray, np.ndarray]: ...
+def read_pcd(path: str, label_field: str = "label") -> Tuple[np.ndarray, np.ndarray]: ...
+def read_poses(path: str) -> np.ndarray: ...  # (N, 4, 4)
+def read_calib(path: str) -> np.ndarray: ...  # (4, 4)
+def lidar_poses(cam_poses: ArrayLike, Tr: ArrayLike) -> np.ndarray: ...
+def read_nodes(path: str, config: Optional[Config] = None) -> Nodes: ...
+def write_nodes(path: str, centres: ArrayLike, classes: ArrayLike, config: Optional[Config] = None,
+                overwrite: bool = False) -> None: ...
+class SequenceDir:
+    dir: str
+    def __init__(self, dir: str) -> None: ...
+    def __len__(self) -> int: ...
+    def bin_path(self, i: int) -> str: ...
+    def label_path(self, i: int) -> str: ...
+    def frame_name(self, i: int) -> str: ...
+    def load(self, i: int) -> Tuple[np.ndarray, np.ndarray]: ...
+
+# --- metrics (metrics.cpp) ---
+class PrCurve:
+    thresholds: np.ndarray
+    precision: np.ndarray
+    recall: np.ndarray
+    positives: int
+def precision_recall(scores: ArrayLike, positives: ArrayLike, positives_override: int = 0) -> PrCurve: ...
+def f1_max(curve: PrCurve) -> float: ...
+def recall_at_100_precision(curve: PrCurve) -> float: ...
+def extended_precision(curve: PrCurve) -> float: ...
+class PoseError:
+    translation_m: float
+    rotation_deg: float
+    def __init__(self, translation_m: float = 0.0, rotation_deg: float = 0.0) -> None: ...
+    def succeeds(self, max_translation_m: float, max_rotation_deg: float) -> bool: ...
+def pose_error(estimate: ArrayLike, ground_truth: ArrayLike) -> PoseError: ...
+class PoseSummary:
+    evaluated: int
+    successes: int
+    success_rate: float
+    rte_mean: float
+    rre_mean: float
+def summarise_poses(errors: Sequence[PoseError], max_translation_m: float = 2.0,
+                    max_rotation_deg: float = 5.0) -> PoseSummary: ...
+class ErrorStats:
+    rmse: float
+    mean: float
+    median: float
+    max: float
+    count: int
+class AteResult:
+    aligned: ErrorStats
+    unaligned: ErrorStats
+    T_gt_est: np.ndarray
+class RpeResult:
+    delta_frames: int
+    translation_m: ErrorStats
+    rotation_deg: ErrorStats
+class SegmentError:
+    translation_percent: float
+    rotation_deg_per_100m: float
+    segments: int
+def absolute_trajectory_error(ground_truth: ArrayLike, estimate: ArrayLike) -> AteResult: ...
+def relative_pose_error(ground_truth: ArrayLike, estimate: ArrayLike, delta_frames: int = 1) -> RpeResult: ...
+def kitti_segment_error(ground_truth: ArrayLike, estimate: ArrayLike, lengths_m: Sequence[float] = ...,
+                        step_frames: int = 10) -> SegmentError: ...
+
+# --- back end (backend.cpp) ---
+class EdgeKind(Enum):
+    ODOMETRY: int; LOOP: int
+class LoopDecision(Enum):
+    ACCEPTED: int; INCONSISTENT: int; LARGE_RESIDUAL: int
+class Edge:
+    from_: int
+    to: int
+    T_from_to: np.ndarray
+    information: np.ndarray
+    kind: EdgeKind
+    def __init__(self, from_: int, to: int, T_from_to: ArrayLike, information: Optional[ArrayLike] = None,
+                 kind: EdgeKind = ...) -> None: ...
+class LoopReport:
+    from_: int
+    to: int
+    decision: LoopDecision
+    consistent_with: int
+    chi2: float
+class BackendResult:
+    poses: np.ndarray
+    loops: list[LoopReport]
+    num_accepted: int
+    num_rejected: int
+    solves: int
+    iterations: int
+    final_cost: float
+    converged: bool
+    reduced: bool
+    num_poses_solved: int
+def odometry_information(T_prev_curr: ArrayLike, noise: OdometryNoise = ...) -> np.ndarray: ...
+def loop_edge(match_frame: int, query_frame: int, match: MatchResult, query_nodes: Nodes, match_nodes: Nodes,
+              noise: LoopNoise = ...) -> Edge: ...
+class PoseGraphOptimizer:
+    num_frames: int
+    num_loops: int
+    poses: np.ndarray
+    result: BackendResult
+    def __init__(self, config: BackendConfig = ..., T_world_first: Optional[ArrayLike] = None) -> None: ...
+    def add_odometry(self, T_prev_curr: ArrayLike, information: Optional[ArrayLike] = None) -> int: ...
+    def add_loop(self, loop: Edge) -> None: ...
+    def close_loop(self, loop: Edge) -> BackendResult: ...
+    def optimize(self) -> BackendResult: ...
+    def optimize_reduced(self) -> BackendResult: ...
