@@ -85,7 +85,9 @@ TEST(DistanceHistogram, HandComputedVotes) {
   const std::vector<float> near = histogram(far, rc);
   const int pole_trunk = 10 * classPairIndex(kPole, kTrunk, 7);
   for (int i = 0; i < 280; ++i) {
-    const double expected = i == pole_trunk + 1 ? 5.0 / std::sqrt(26.0) : i == pole_trunk + 2 ? 1.0 / std::sqrt(26.0) : 0.0;
+    const double expected = i == pole_trunk + 1   ? 5.0 / std::sqrt(26.0)
+                            : i == pole_trunk + 2 ? 1.0 / std::sqrt(26.0)
+                                                  : 0.0;
     EXPECT_NEAR(near[i], expected, 1e-6) << "cell " << i;
   }
   // No pair in range: the zero vector, not NaN.

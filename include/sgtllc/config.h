@@ -150,7 +150,7 @@ enum class RetrievalMethod {
 enum class RetrievalKey {
   /// Per class-pair histogram of node-centre distances (retrieval/distance_histogram.h) [default]. [deviation: the
   /// spec's key is Des^G (§5); the max-pooled Des^G changes by a whole cell when one node appears or vanishes,
-  /// and missed 11 % of urban7's revisits among its 15 candidates (recall@15 0.888 → 0.99 with the histogram,
+  /// and missed 11 % of urban7's revisits among its 15 candidates (recall@15 0.888 → 0.985 with the histogram,
   /// BENCHMARKS.md "Retrieval key")]
   kDistanceHistogram,
   kGlobalDescriptor,  ///< Des^G of DescriptorConfig::global_mode, as the paper and the authors' code

@@ -27,7 +27,8 @@ int distanceHistogramSize(int num_classes, int bins);
 ///
 /// Why not max-pooling: a cell of Des^G (G2) is the maximum over nodes, so one node entering or leaving the scan
 /// changes every cell it held by the full value; here it changes N − 1 of the N(N − 1)/2 votes, a share of 2/N,
-/// spread over the bins (measured in the notes of the `retrieval` branch: recall@15 0.89 → 0.99 on urban7).
+/// spread over the bins (BENCHMARKS.md "Retrieval key": recall@15 0.888 → 0.985 on urban7, 0.980 → 0.987 on
+/// sub5).
 /// Rotation- and translation-invariant, like Des^G; deterministic (fixed summation order). O(N²) over the graph's
 /// distance matrix.
 std::vector<float> computeDistanceHistogram(const SemanticGraph& graph, const RetrievalConfig& config);
