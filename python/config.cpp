@@ -34,6 +34,10 @@ void enums(py::module_& m) {
   py::enum_<RetrievalMethod>(m, "RetrievalMethod", "Nearest-neighbour search (retrieval.method).")
       .value("BRUTE_FORCE", RetrievalMethod::kBruteForce, "exact linear scan (default)")
       .value("KD_TREE", RetrievalMethod::kKdTree, "exact kd-tree search");
+  py::enum_<RetrievalKey>(m, "RetrievalKey", "The stored, searched key (retrieval.key).")
+      .value("DISTANCE_HISTOGRAM", RetrievalKey::kDistanceHistogram,
+             "per class-pair histogram of node-centre distances (default)")
+      .value("GLOBAL_DESCRIPTOR", RetrievalKey::kGlobalDescriptor, "Des^G of descriptor.global_mode");
   py::enum_<NodeScore>(m, "NodeScore", "Node similarity form (association.score).")
       .value("RATIO", NodeScore::kRatio, "matched slots / valid query slots (default)")
       .value("COUNT", NodeScore::kCount, "raw count of matched slots");
@@ -96,7 +100,10 @@ void sections(py::module_& m) {
       .def_readwrite("num_candidates", &RetrievalConfig::num_candidates, "K: candidates per query")
       .def_readwrite("exclude_recent", &RetrievalConfig::exclude_recent, "G: query q searches frames <= q - G")
       .def_readwrite("warmup_frames", &RetrievalConfig::warmup_frames, "no query before this many frames")
-      .def_readwrite("method", &RetrievalConfig::method, "search structure");
+      .def_readwrite("method", &RetrievalConfig::method, "search structure")
+      .def_readwrite("key", &RetrievalConfig::key, "the stored, searched key")
+      .def_readwrite("histogram_bins", &RetrievalConfig::histogram_bins, "bins per class pair of the distance histogram")
+      .def_readwrite("histogram_range", &RetrievalConfig::histogram_range, "distances binned by the histogram (m)");
 
   py::class_<AssociationConfig>(m, "AssociationConfig", "Node association (association.*).")
       .def(py::init<>())

@@ -28,6 +28,8 @@ class SubVectorKind(Enum):
     DOT_PRODUCTS: int; ANGLES: int; LENGTHS: int
 class RetrievalMethod(Enum):
     BRUTE_FORCE: int; KD_TREE: int
+class RetrievalKey(Enum):
+    DISTANCE_HISTOGRAM: int; GLOBAL_DESCRIPTOR: int
 class NodeScore(Enum):
     RATIO: int; COUNT: int
 class ScoreFormula(Enum):
@@ -71,6 +73,9 @@ class RetrievalConfig:
     exclude_recent: int
     warmup_frames: int
     method: RetrievalMethod
+    key: RetrievalKey
+    histogram_bins: int
+    histogram_range: float
 class AssociationConfig:
     sigma_1: float
     max_delta_aj: float

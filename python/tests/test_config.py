@@ -19,9 +19,13 @@ def test_nested_fields_change_the_config():
     c.cluster.classes[0].radius = 2.0
     c.labels.custom_map[10] = 0
     c.retrieval.method = sgtllc.RetrievalMethod.KD_TREE
+    assert c.retrieval.key == sgtllc.RetrievalKey.DISTANCE_HISTOGRAM and c.retrieval.histogram_bins == 10
+    c.retrieval.key = sgtllc.RetrievalKey.GLOBAL_DESCRIPTOR
+    c.retrieval.histogram_range = 25.0
     c.backend.solver.max_iterations = 7
     text = c.to_yaml()
-    for line in ["sigma_4: 0.5", "max_nodes: 300", "method: kdtree", "max_iterations: 7", "10: 0"]:
+    for line in ["sigma_4: 0.5", "max_nodes: 300", "method: kdtree", "key: global", "histogram_range: 25.0",
+                 "max_iterations: 7", "10: 0"]:
         assert line in text
     assert "radius: 2.0" in text.split("fence:")[0].split("building:")[1]
     assert len(c.cluster.classes) == 7 and c.cluster.classes[0].min_size == 200
