@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <unistd.h>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -21,7 +23,8 @@ class CliBackend : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("sgtllc_cli_backend_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("sgtllc_cli_backend_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }

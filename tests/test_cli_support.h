@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 namespace sgtllc::test {
@@ -37,7 +39,8 @@ class CliTempDirTest : public ::testing::Test {
   explicit CliTempDirTest(std::string prefix) : prefix_(std::move(prefix)) {}
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("sgtllc_" + prefix_ + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("sgtllc_" + prefix_ + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+            std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }

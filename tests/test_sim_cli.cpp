@@ -35,8 +35,10 @@ CliResult simulate(const std::string& args) {
 class SimCli : public ::testing::Test {
  protected:
   void SetUp() override {
+    // The process id keeps two concurrent runs of the suite (two build trees on one machine) apart.
     dir_ = fs::temp_directory_path() /
-           ("sgtllc_sim_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("sgtllc_sim_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
