@@ -25,7 +25,8 @@ const Config& validated(const Config& config) {
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, config.labels, config.graph.max_nodes),
-      database_(config.retrieval.method) {
+      database_(config.retrieval.method),
+      clouds_(config.registration, config.labels) {
 }
 
 int LoopDetector::firstSearchedFrame() const {
@@ -38,10 +39,27 @@ FrameResult LoopDetector::process(const LabeledCloud& cloud) {
   NodeExtractionResult extracted = extractor_.extract(cloud);
   result.timing.extraction_ms = msSince(start);
   result.extraction = extracted.stats;
-  return processNodes(std::move(extracted.nodes), std::move(result));
+  auto refine_start = Clock::now();
+  CompactCloud compact = clouds_.prepare(cloud);
+  double refinement_ms = msSince(refine_start);
+  result = processNodes(std::move(extracted.nodes), std::move(result));
+  if (result.is_loop && clouds_.enabled()) {
+    refine_start = Clock::now();
+    Candidate& loop = result.candidates[static_cast<size_t>(result.best)];
+    loop.refinement = clouds_.refine(clouds_.queryCloud(cloud), loop.frame, loop.match.T_match_query);
+    if (loop.refinement && loop.refinement->used()) loop.match.T_match_query = loop.refinement->T_match_query;
+    refinement_ms += msSince(refine_start);
+  }
+  clouds_.add(std::move(compact));
+  result.timing.refinement_ms = refinement_ms;
+  return result;
 }
 
-FrameResult LoopDetector::process(std::vector<Node> nodes) { return processNodes(std::move(nodes), FrameResult{}); }
+FrameResult LoopDetector::process(std::vector<Node> nodes) {
+  FrameResult result = processNodes(std::move(nodes), FrameResult{});
+  clouds_.add({});  // no points: this frame's loops keep the SVD pose
+  return result;
+}
 
 FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult result) {
   result.frame = database_.size();
@@ -101,6 +119,13 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   result.extraction_query = q.stats;
   result.extraction_match = m.stats;
   result.timing.extraction_ms = extraction_ms;
+  if (config.registration.pair && result.match.rejection == Rejection::kNone) {
+    const auto refine_start = Clock::now();
+    const LabelMap labels(config.labels);
+    refinePair(&result, queryPoints(query, labels, config.registration), matchPoints(match, labels, config.registration),
+               config);
+    result.timing.refinement_ms = msSince(refine_start);
+  }
   return result;
 }
 
@@ -119,6 +144,13 @@ PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const C
   result.match_nodes = m.graph.nodes;
   result.is_loop = isLoop(result.match, config.verification);
   return result;
+}
+
+void refinePair(PairResult* result, const std::vector<Eigen::Vector3f>& query_points,
+                const std::vector<Eigen::Vector3f>& match_points, const Config& config) {
+  if (!config.registration.pair || result->match.rejection != Rejection::kNone) return;
+  result->refinement = refinePose(query_points, match_points, result->match.T_match_query, config.registration);
+  if (result->refinement->used()) result->match.T_match_query = result->refinement->T_match_query;
 }
 
 }  // namespace sgtllc
