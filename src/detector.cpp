@@ -39,25 +39,31 @@ FrameResult LoopDetector::process(const LabeledCloud& cloud) {
   NodeExtractionResult extracted = extractor_.extract(cloud);
   result.timing.extraction_ms = msSince(start);
   result.extraction = extracted.stats;
-  auto refine_start = Clock::now();
-  CompactCloud compact = clouds_.prepare(cloud);
-  double refinement_ms = msSince(refine_start);
-  result = processNodes(std::move(extracted.nodes), std::move(result));
-  if (result.is_loop && clouds_.enabled()) {
-    refine_start = Clock::now();
-    Candidate& loop = result.candidates[static_cast<size_t>(result.best)];
-    loop.refinement = clouds_.refine(clouds_.queryCloud(cloud), loop.frame, loop.match.T_match_query);
-    if (loop.refinement && loop.refinement->used()) loop.match.T_match_query = loop.refinement->T_match_query;
-    refinement_ms += msSince(refine_start);
-  }
-  clouds_.add(std::move(compact));
-  result.timing.refinement_ms = refinement_ms;
+  const auto refine_start = Clock::now();
+  RegistrationClouds clouds = clouds_.prepare(cloud);
+  const double prepare_ms = msSince(refine_start);
+  const ExtractionStats stats = result.extraction;
+  const double extraction_ms = result.timing.extraction_ms;
+  result = process(std::move(extracted.nodes), std::move(clouds));
+  result.extraction = stats;
+  result.timing.extraction_ms = extraction_ms;
+  result.timing.refinement_ms += prepare_ms;
   return result;
 }
 
-FrameResult LoopDetector::process(std::vector<Node> nodes) {
+FrameResult LoopDetector::process(std::vector<Node> nodes) { return process(std::move(nodes), RegistrationClouds{}); }
+
+FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds clouds) {
   FrameResult result = processNodes(std::move(nodes), FrameResult{});
-  clouds_.add({});  // no points: this frame's loops keep the SVD pose
+  // Only the declared loop is refined (issue 13 item 4), against the stored cloud of its frame.
+  if (result.is_loop && clouds_.enabled() && !clouds.query.empty()) {
+    const auto start = Clock::now();
+    Candidate& loop = result.candidates[static_cast<size_t>(result.best)];
+    loop.refinement = clouds_.refine(clouds.query, loop.frame, loop.match.T_match_query);
+    if (loop.refinement && loop.refinement->used()) loop.match.T_match_query = loop.refinement->T_match_query;
+    result.timing.refinement_ms = msSince(start);
+  }
+  clouds_.add(std::move(clouds.match));  // empty for node input: that frame's loops keep the SVD pose
   return result;
 }
 

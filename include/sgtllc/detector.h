@@ -74,6 +74,9 @@ class LoopDetector {
   /// Throws sgtllc::Error for more than graph.max_nodes nodes, a label outside 0..C−1 or a non-finite centre; the
   /// frame is then not stored.
   FrameResult process(std::vector<Node> nodes);
+  /// The same with the frame's registration clouds (clouds().prepare of its scan), for callers that extract
+  /// nodes themselves, e.g. in parallel: the loop of this frame is refined as by process(cloud).
+  FrameResult process(std::vector<Node> nodes, RegistrationClouds clouds);
 
   /// Index of the first frame whose query searches the database: max(retrieval.exclude_recent,
   /// retrieval.warmup_frames). A sequence of at most this many frames gets no candidate at all, so it cannot have a

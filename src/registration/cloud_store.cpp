@@ -7,13 +7,9 @@ namespace sgtllc {
 CloudStore::CloudStore(const RegistrationConfig& config, const LabelConfig& labels)
     : config_(config), labels_(labels) {}
 
-CompactCloud CloudStore::prepare(const LabeledCloud& cloud) const {
+RegistrationClouds CloudStore::prepare(const LabeledCloud& cloud) const {
   if (!enabled()) return {};
-  return compactCloud(matchPoints(cloud, labels_, config_));
-}
-
-std::vector<Eigen::Vector3f> CloudStore::queryCloud(const LabeledCloud& cloud) const {
-  return compactCloud(queryPoints(cloud, labels_, config_)).expand();
+  return {compactCloud(matchPoints(cloud, labels_, config_)), compactCloud(queryPoints(cloud, labels_, config_)).expand()};
 }
 
 void CloudStore::add(CompactCloud cloud) {

@@ -16,6 +16,13 @@
 
 namespace sgtllc {
 
+/// A frame's clouds for the online refinement: the one stored (match role) and the one moved if the frame closes
+/// a loop (query role). Both empty when the store is disabled or the frame came as nodes.
+struct RegistrationClouds {
+  CompactCloud match;                      ///< matchPoints, quantised: what the store keeps
+  std::vector<Eigen::Vector3f> query;      ///< queryPoints, quantised like the stored ones
+};
+
 /// One CompactCloud per frame, in frame order: at most 6 · RegistrationConfig::max_points bytes each. Empty (and
 /// nothing stored) unless RegistrationConfig::online.
 class CloudStore {
@@ -23,10 +30,8 @@ class CloudStore {
   CloudStore(const RegistrationConfig& config, const LabelConfig& labels);
 
   bool enabled() const { return config_.online; }
-  /// The compact cloud of @p cloud (matchPoints, quantised); empty when the store is disabled.
-  CompactCloud prepare(const LabeledCloud& cloud) const;
-  /// The query cloud of @p cloud (queryPoints, quantised like the stored ones so both sides see the same grid).
-  std::vector<Eigen::Vector3f> queryCloud(const LabeledCloud& cloud) const;
+  /// Both clouds of @p cloud; empty when the store is disabled. A pure function of the scan (safe in parallel).
+  RegistrationClouds prepare(const LabeledCloud& cloud) const;
   /// Appends the next frame's cloud (empty for a frame given as nodes: its loops keep the SVD pose).
   void add(CompactCloud cloud);
   /// Refines @p T_seed of the query points (queryCloud) against stored frame @p match; nullopt if the store is
