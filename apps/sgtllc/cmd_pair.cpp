@@ -173,8 +173,10 @@ void runPair(const PairOptions& o) {
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
   const auto refine_start = std::chrono::steady_clock::now();
   const LabelMap labels(config.labels);
-  refinePair(&r, queryPoints(q.cloud, labels, config.registration), matchPoints(mt.cloud, labels, config.registration),
-             config);
+  if (!q.from_node_file && !mt.from_node_file) {  // node files carry no points: the SVD pose stands
+    refinePair(&r, queryPoints(q.cloud, labels, config.registration),
+               matchPoints(mt.cloud, labels, config.registration), config);
+  }
   if (r.refinement) {
     r.timing.refinement_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - refine_start).count();
