@@ -26,7 +26,8 @@ const Config& validated(const Config& config) {
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, config.labels, config.graph.max_nodes, config.threads),
-      database_(config.retrieval.method) {
+      database_(config.retrieval.method),
+      clouds_(config.registration, config.labels) {
 }
 
 int LoopDetector::firstSearchedFrame() const {
@@ -39,10 +40,33 @@ FrameResult LoopDetector::process(const LabeledCloud& cloud) {
   NodeExtractionResult extracted = extractor_.extract(cloud);
   result.timing.extraction_ms = msSince(start);
   result.extraction = extracted.stats;
-  return processNodes(std::move(extracted.nodes), std::move(result));
+  const auto refine_start = Clock::now();
+  RegistrationClouds clouds = clouds_.prepare(cloud);
+  const double prepare_ms = msSince(refine_start);
+  const ExtractionStats stats = result.extraction;
+  const double extraction_ms = result.timing.extraction_ms;
+  result = process(std::move(extracted.nodes), std::move(clouds));
+  result.extraction = stats;
+  result.timing.extraction_ms = extraction_ms;
+  result.timing.refinement_ms += prepare_ms;
+  return result;
 }
 
-FrameResult LoopDetector::process(std::vector<Node> nodes) { return processNodes(std::move(nodes), FrameResult{}); }
+FrameResult LoopDetector::process(std::vector<Node> nodes) { return process(std::move(nodes), RegistrationClouds{}); }
+
+FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds clouds) {
+  FrameResult result = processNodes(std::move(nodes), FrameResult{});
+  // Only the declared loop is refined (issue 13 item 4), against the stored cloud of its frame.
+  if (result.is_loop && clouds_.enabled() && !clouds.query.empty()) {
+    const auto start = Clock::now();
+    Candidate& loop = result.candidates[static_cast<size_t>(result.best)];
+    loop.refinement = clouds_.refine(clouds.query, loop.frame, loop.match.T_match_query);
+    if (loop.refinement && loop.refinement->used()) loop.match.T_match_query = loop.refinement->T_match_query;
+    result.timing.refinement_ms = msSince(start);
+  }
+  clouds_.add(std::move(clouds.match));  // empty for node input: that frame's loops keep the SVD pose
+  return result;
+}
 
 FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult result) {
   result.frame = database_.size();
@@ -103,6 +127,13 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   result.extraction_query = q.stats;
   result.extraction_match = m.stats;
   result.timing.extraction_ms = extraction_ms;
+  if (config.registration.pair && result.match.rejection == Rejection::kNone) {
+    const auto refine_start = Clock::now();
+    const LabelMap labels(config.labels);
+    refinePair(&result, queryPoints(query, labels, config.registration), matchPoints(match, labels, config.registration),
+               config);
+    result.timing.refinement_ms = msSince(refine_start);
+  }
   return result;
 }
 
@@ -121,6 +152,13 @@ PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const C
   result.match_nodes = m.graph.nodes;
   result.is_loop = isLoop(result.match, config.verification);
   return result;
+}
+
+void refinePair(PairResult* result, const std::vector<Eigen::Vector3f>& query_points,
+                const std::vector<Eigen::Vector3f>& match_points, const Config& config) {
+  if (!config.registration.pair || result->match.rejection != Rejection::kNone) return;
+  result->refinement = refinePose(query_points, match_points, result->match.T_match_query, config.registration);
+  if (result->refinement->used()) result->match.T_match_query = result->refinement->T_match_query;
 }
 
 }  // namespace sgtllc

@@ -68,4 +68,41 @@ void KdTreeIndex::knn(const float* query, int k, std::vector<std::pair<int, floa
   for (const auto& [i, d] : within) out->emplace_back(static_cast<int>(i), d);
 }
 
+struct PointKdTree::Tree {
+  using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, RowsAdaptor>, RowsAdaptor, 3,
+                                                    uint32_t>;
+  RowsAdaptor adaptor;
+  Index index;
+  explicit Tree(const std::vector<float>* xyz)
+      : adaptor{xyz, 3, static_cast<int>(xyz->size() / 3)},
+        index(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {
+    index.buildIndex();
+  }
+};
+
+PointKdTree::PointKdTree(const std::vector<float>* xyz) : tree_(std::make_unique<Tree>(xyz)) {}
+
+PointKdTree::~PointKdTree() = default;
+
+std::pair<int, float> PointKdTree::nearest(const float* query) const {
+  if (tree_->adaptor.count == 0) return {-1, std::numeric_limits<float>::infinity()};
+  uint32_t idx = 0;
+  float d2 = 0.0f;
+  nanoflann::KNNResultSet<float, uint32_t> result(1);
+  result.init(&idx, &d2);
+  tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
+  return {static_cast<int>(idx), d2};
+}
+
+void PointKdTree::knn(const float* query, int k, std::vector<uint32_t>* out) const {
+  const size_t want = std::min<size_t>(static_cast<size_t>(k), static_cast<size_t>(tree_->adaptor.count));
+  out->assign(want, 0);
+  std::vector<float> d2(want);
+  if (want == 0) return;
+  nanoflann::KNNResultSet<float, uint32_t> result(want);
+  result.init(out->data(), d2.data());
+  tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
+  out->resize(result.size());
+}
+
 }  // namespace sgtllc::internal

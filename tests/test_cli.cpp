@@ -95,10 +95,13 @@ TEST_F(Cli, ExportedNodeFilesGiveTheSameResult) {
   const CliRun n = run("pair --json " + path("out/query_nodes.txt") + " " + path("out/match_nodes.txt"), false);
   ASSERT_EQ(n.status, 0) << n.out;
   const auto a = nlohmann::json::parse(r.out), b = nlohmann::json::parse(n.out);
-  for (const char* key : {"loop", "score", "score_c", "nodes_query", "nodes_match", "associations", "inliers",
-                          "T_match_query"}) {
+  for (const char* key : {"loop", "score", "score_c", "nodes_query", "nodes_match", "associations", "inliers"}) {
     EXPECT_EQ(a[key], b[key]) << key;
   }
+  // Node files carry no points: their pose is the object-level SVD pose that the scans' ICP started from.
+  EXPECT_EQ(a["refinement"]["T_match_query_svd"], b["T_match_query"]);
+  EXPECT_TRUE(b["refinement"].is_null());
+  EXPECT_EQ(a["refinement"]["status"], "converged");
   // A second export into the same folder keeps the files unless --force.
   const CliRun again = run("pair --export " + path("out") + " " + scan("004501") + " " + scan("000052"));
   EXPECT_EQ(again.status, 1);

@@ -85,6 +85,20 @@ std::vector<Range> ranges() {
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
+  r.push_back({"registration.voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
+  r.push_back({"registration.max_points", {"100", "1000000"}, {"99", "1000001"}, "[100, 1000000]"});
+  r.push_back({"registration.match_voxel", {"0.05", "10"}, {"0", "10.5"}, "[0.05, 10]"});
+  r.push_back({"registration.match_max_points", {"100", "1000000"}, {"0", "1000001"}, "[100, 1000000]"});
+  r.push_back({"registration.normal_neighbors", {"5", "100"}, {"4", "101"}, "[5, 100]"});
+  r.push_back({"registration.max_correspondence", {"1e-09", "10"}, {"0", "10.5"}, "(0, 10]"});
+  r.push_back({"registration.kernel", {"0", "10"}, {"-0.1", "10.5"}, "[0, 10]"});
+  r.push_back({"registration.max_iterations", {"1", "500"}, {"0", "501"}, "[1, 500]"});
+  r.push_back({"registration.convergence", {"1e-09", "0.1"}, {"0", "0.2"}, "(0, 0.1]"});
+  r.push_back({"registration.min_fitness", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
+  r.push_back({"registration.max_translation_change", {"1e-09", "100"}, {"0", "101"}, "(0, 100]"});
+  r.push_back({"registration.max_rotation_change_deg", {"1e-09", "180"}, {"0", "181"}, "(0, 180]"});
+  r.push_back({"registration.information_sigma_min", {"1e-09", "10"}, {"0", "11"}, "(0, 10]"});
+  r.push_back({"registration.information_scale", {"1e-09", "1"}, {"0", "1.5"}, "(0, 1]"});
   r.push_back({"threads", {"1", "256"}, {"0", "257"}, "[1, 256]"});
   const std::string b = "backend.";
   r.push_back({b + "odometry.translation_sigma_per_m", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
@@ -160,7 +174,7 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 8 * 3 + 25 + 18);  // 8 classes incl. vehicle, 25 other keys, 18 backend.* keys
+  EXPECT_EQ(numeric, 8 * 3 + 25 + 18 + 14);  // 8 classes incl. vehicle, 25 other keys, 18 backend.*, 14 registration.*
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

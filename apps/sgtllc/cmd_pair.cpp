@@ -95,12 +95,20 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   if (m.rejection != Rejection::kNone) std::cout << "   (rejected: " << rejectionName(m.rejection) << ")";
   std::cout << "\n";
   if (m.rejection == Rejection::kNone) {
-    std::cout << "T_match_query (maps query points into the match frame):\n" << matrixText(m.T_match_query, "  ");
+    std::cout << "T_match_query (maps query points into the match frame"
+              << (r.refinement && r.refinement->used() ? ", refined by ICP" : "") << "):\n"
+              << matrixText(m.T_match_query, "  ");
+  }
+  if (const auto& f = r.refinement) {
+    std::cout << "refinement: " << refinementStatusName(f->status) << (f->used() ? "" : " (kept the SVD pose)")
+              << "   fitness " << fixed(f->fitness, 3) << ", rmse " << fixed(f->rmse_m, 4) << " m, iterations "
+              << f->iterations << ", points " << f->query_points << " / " << f->match_points << "\n";
+    if (f->used()) std::cout << "T_match_query before refinement (SVD):\n" << matrixText(f->T_match_query_seed, "  ");
   }
   const StageTimes& t = r.timing;
   std::cout << "time (ms): load " << fixed(load_ms, 2) << ", extraction " << fixed(t.extraction_ms, 2)
             << ", description " << fixed(t.description_ms, 2) << ", verification " << fixed(t.verification_ms, 2)
-            << "\n";
+            << ", refinement " << fixed(t.refinement_ms, 2) << "\n";
 }
 
 void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
@@ -116,6 +124,24 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                        {"similarity", a.similarity},
                        {"inlier", static_cast<bool>(inlier[k])}});
   }
+  Json refinement = nullptr;
+  if (const auto& f = r.refinement) {
+    Json information = Json::array();
+    for (int i = 0; i < 6; ++i) {
+      Json row = Json::array();
+      for (int j = 0; j < 6; ++j) row.push_back(f->information(i, j));
+      information.push_back(row);
+    }
+    refinement = {{"status", refinementStatusName(f->status)},
+                  {"used", f->used()},
+                  {"fitness", f->fitness},
+                  {"rmse_m", f->rmse_m},
+                  {"iterations", f->iterations},
+                  {"query_points", f->query_points},
+                  {"match_points", f->match_points},
+                  {"T_match_query_svd", matrixJson(f->T_match_query_seed)},
+                  {"information", information}};
+  }
   const Json out = {{"query", o.query},
                               {"match", o.match},
                               {"loop", r.is_loop},
@@ -128,6 +154,7 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                               {"inliers", m.inliers.size()},
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},
+                              {"refinement", refinement},
                               {"timing_ms", timingJson(r.timing, load_ms)}};
   std::cout << jsonText(out) << "\n";
 }
@@ -144,6 +171,16 @@ void runPair(const PairOptions& o) {
   r.extraction_query = q.stats;
   r.extraction_match = mt.stats;
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
+  const auto refine_start = std::chrono::steady_clock::now();
+  const LabelMap labels(config.labels);
+  if (!q.from_node_file && !mt.from_node_file) {  // node files carry no points: the SVD pose stands
+    refinePair(&r, queryPoints(q.cloud, labels, config.registration),
+               matchPoints(mt.cloud, labels, config.registration), config);
+  }
+  if (r.refinement) {
+    r.timing.refinement_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - refine_start).count();
+  }
   const double load_ms = q.load_ms + mt.load_ms;
   if (o.json) {
     printJson(o, r, config, load_ms);

@@ -77,6 +77,7 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
   f.extraction_ms = msSince(start);
   f.nodes = std::move(extracted.nodes);
   f.stats = extracted.stats;
+  if (config.registration.pair) f.cloud = cloud;
   return f;
 }
 
@@ -155,6 +156,7 @@ Json timingJson(const StageTimes& t, double load_ms) {
           {"description", t.description_ms},
           {"retrieval", t.retrieval_ms},
           {"verification", t.verification_ms},
+          {"refinement", t.refinement_ms},
           {"total", load_ms + t.total_ms()}};
 }
 

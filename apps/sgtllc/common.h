@@ -38,6 +38,8 @@ struct FrameNodes {
   std::vector<Node> nodes;
   bool from_node_file = false;  ///< read from a node file instead of extracted from points
   size_t points = 0;            ///< points of the scan (0 for a node file)
+  /// The scan, kept for the fine registration when registration.pair is on (empty for a node file)
+  LabeledCloud cloud;
   ExtractionStats stats;        ///< point bookkeeping (a node file's unknown ids count as unknown_label_points)
   double load_ms = 0.0;
   double extraction_ms = 0.0;

@@ -57,6 +57,15 @@ ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& 
   loop.query = source.name(query);
   loop.match = source.name(static_cast<size_t>(c.frame));
   const int q = static_cast<int>(query);
+  if (c.refinement && c.refinement->used()) {
+    // The ICP pose (registration.online) and its point-to-plane information (docs/registration.md).
+    loop.edge.from = c.frame;
+    loop.edge.to = q;
+    loop.edge.T_from_to = Eigen::Isometry3d(c.match.T_match_query);
+    loop.edge.information = c.refinement->information;
+    loop.edge.kind = backend::EdgeKind::kLoop;
+    return loop;
+  }
   try {
     loop.edge = backend::loopEdge(c.frame, q, c.match, db.nodes(q), db.nodes(c.frame), noise);
   } catch (const Error&) {

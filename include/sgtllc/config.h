@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "sgtllc/backend/backend_config.h"
+#include "sgtllc/registration/registration_config.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc {
@@ -239,6 +240,8 @@ struct Config {
   RetrievalConfig retrieval;
   AssociationConfig association;
   VerificationConfig verification;
+  /// Fine registration of loop poses (point-to-plane ICP; `sgtllc pair` by default, online as an option).
+  RegistrationConfig registration;
   int threads = 1;  ///< worker threads for candidate verification; results do not depend on it [1, kMaxThreads]
   /// Pose-graph back end (`sgtllc run --odometry`, `sgtllc optimize`): plain data here, the optimiser is the
   /// separate sgtllc_backend library. Ranges: validateBackendConfig (config_backend.cpp) and docs/backend.md.
@@ -260,6 +263,9 @@ struct Config {
 /// Range checks of the back-end settings as ConfigError (`backend.loss_scale = 0 is out of range (0, 1000]`); a
 /// configuration that passes also passes backend::BackendConfig::validate().
 void validateBackendConfig(const backend::BackendConfig& backend);
+
+/// Range checks of the registration settings as ConfigError (registration_config.cpp).
+void validateRegistrationConfig(const RegistrationConfig& registration);
 
 /// A configuration value out of its allowed range. key() is the YAML key (`verification.sigma_4`), so a reader
 /// of a configuration file can point at the offending line.

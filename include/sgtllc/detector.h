@@ -11,6 +11,7 @@
 #include "sgtllc/database.h"
 #include "sgtllc/frame.h"
 #include "sgtllc/node_extraction.h"
+#include "sgtllc/registration/cloud_store.h"
 #include "sgtllc/verification.h"
 
 namespace sgtllc {
@@ -21,7 +22,10 @@ struct StageTimes {
   double description_ms = 0.0;   ///< graph, local and global descriptors
   double retrieval_ms = 0.0;     ///< K-nearest-neighbour search over global descriptors
   double verification_ms = 0.0;  ///< candidate descriptors, association, RANSAC and pose
-  double total_ms() const { return extraction_ms + description_ms + retrieval_ms + verification_ms; }
+  /// Fine registration: the frame's compact cloud and the ICP of its loop (0 unless registration.online; for a
+  /// pair, the ICP of comparePair when registration.pair)
+  double refinement_ms = 0.0;
+  double total_ms() const { return extraction_ms + description_ms + retrieval_ms + verification_ms + refinement_ms; }
 };
 
 /// One retrieved candidate frame and its verification.
@@ -29,6 +33,9 @@ struct Candidate {
   int frame = -1;           ///< database index of the candidate
   float distance2 = 0.0f;   ///< squared L2 distance of the global descriptors
   MatchResult match;        ///< association, scores and pose (query → candidate)
+  /// ICP of the declared loop (registration.online, points input only); when used(), match.T_match_query is the
+  /// refined pose and the seed is kept here.
+  std::optional<Refinement> refinement;
 };
 
 /// Whether a frame's query searched the database, or why not (spec §5).
@@ -67,6 +74,9 @@ class LoopDetector {
   /// Throws sgtllc::Error for more than graph.max_nodes nodes, a label outside 0..C−1 or a non-finite centre; the
   /// frame is then not stored.
   FrameResult process(std::vector<Node> nodes);
+  /// The same with the frame's registration clouds (clouds().prepare of its scan), for callers that extract
+  /// nodes themselves, e.g. in parallel: the loop of this frame is refined as by process(cloud).
+  FrameResult process(std::vector<Node> nodes, RegistrationClouds clouds);
 
   /// Index of the first frame whose query searches the database: max(retrieval.exclude_recent,
   /// retrieval.warmup_frames). A sequence of at most this many frames gets no candidate at all, so it cannot have a
@@ -77,6 +87,8 @@ class LoopDetector {
   const FrameDatabase& database() const { return database_; }
   const Config& config() const { return config_; }
   const NodeExtractor& extractor() const { return extractor_; }
+  /// Compact clouds of the stored frames (registration.online; empty otherwise).
+  const CloudStore& clouds() const { return clouds_; }
 
  private:
   FrameResult processNodes(std::vector<Node> nodes, FrameResult result);
@@ -84,6 +96,7 @@ class LoopDetector {
   Config config_;
   NodeExtractor extractor_;
   FrameDatabase database_;
+  CloudStore clouds_;
 };
 
 /// Result of comparing two frames directly.
@@ -95,11 +108,20 @@ struct PairResult {
   ExtractionStats extraction_query;
   ExtractionStats extraction_match;
   StageTimes timing;             ///< both frames' extraction and description; verification of the pair
+  /// ICP of the pose (registration.pair, scans given, a pose found); when used(), match.T_match_query is the
+  /// refined pose and the object-level SVD pose is refinement->T_match_query_seed.
+  std::optional<Refinement> refinement;
 };
 
 /// Compares two labelled scans: is @p query a revisit of @p match, and where is it in @p match's frame?
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config = {});
-/// The same for ready-made node sets.
+/// The same for ready-made node sets (no points: no refinement).
 PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config = {});
+
+/// Refines @p result's pose by ICP of @p query_points onto @p match_points (registrationPoints of the two scans)
+/// if registration.pair is on and verification found a pose; sets PairResult::refinement and, when it is used,
+/// match.T_match_query. comparePair of two scans calls it; a caller that extracts nodes itself calls it after.
+void refinePair(PairResult* result, const std::vector<Eigen::Vector3f>& query_points,
+                const std::vector<Eigen::Vector3f>& match_points, const Config& config);
 
 }  // namespace sgtllc

@@ -25,9 +25,10 @@ double msSince(std::chrono::steady_clock::time_point start) {
 FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config) {
   auto seq = std::make_shared<io::SequenceDir>(dir);
   auto extractor = std::make_shared<NodeExtractor>(config.cluster, config.labels, config.graph.max_nodes);
+  auto store = std::make_shared<CloudStore>(config.registration, config.labels);  // prepare() only
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
-  source.loader_ = [seq, extractor](size_t i) {
+  source.loader_ = [seq, extractor, store](size_t i) {
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
     const LabeledCloud cloud = seq->load(i);
@@ -37,6 +38,9 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     f.extraction_ms = msSince(start);
     f.nodes = std::move(r.nodes);
     f.stats = r.stats;
+    start = std::chrono::steady_clock::now();
+    f.clouds = store->prepare(cloud);
+    f.clouds_ms = msSince(start);
     return f;
   };
   return source;
@@ -94,8 +98,9 @@ void streamSequence(const FrameSource& source, LoopDetector& detector, int threa
     });
     for (size_t k = 0; k < count; ++k) {
       if (errors[k]) std::rethrow_exception(errors[k]);
-      FrameResult r = detector.process(std::move(frames[k].nodes));
+      FrameResult r = detector.process(std::move(frames[k].nodes), std::move(frames[k].clouds));
       r.timing.extraction_ms = frames[k].extraction_ms;
+      r.timing.refinement_ms += frames[k].clouds_ms;
       r.extraction = frames[k].stats;
       on_frame(first + k, frames[k], r);
     }

@@ -317,12 +317,14 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                      [](Config& c) -> double& { return c.verification.sigma_4; }));
   f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
                                 [](Config& c) -> uint32_t& { return c.verification.seed; }));
+  const BackendFieldMakers makers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
+                                  [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
+                                  [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
+                                  [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); }};
+  addRegistrationFields(makers);
   f.push_back(integer<int>("threads", "worker threads for candidate verification; results do not depend on it",
                       [](Config& c) -> int& { return c.threads; }));
-  addBackendFields({[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
-                    [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
-                    [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
-                    [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); }});
+  addBackendFields(makers);
   return f;
 }
 

@@ -24,4 +24,7 @@ struct BackendFieldMakers {
 /// Adds every field of backend::BackendConfig, in struct order, with keys mirroring the struct.
 void addBackendFields(const BackendFieldMakers& add);
 
+/// Adds every field of RegistrationConfig (`registration.*`, config_yaml_registration.cpp) with the same makers.
+void addRegistrationFields(const BackendFieldMakers& add);
+
 }  // namespace sgtllc::io::detail

@@ -19,6 +19,8 @@ struct LoadedFrame {
   ExtractionStats stats;       ///< point bookkeeping (node files: unknown ids in unknown_label_points)
   double load_ms = 0.0;        ///< reading files
   double extraction_ms = 0.0;  ///< points → nodes (0 for node files)
+  RegistrationClouds clouds;   ///< for registration.online (scans only; empty otherwise)
+  double clouds_ms = 0.0;      ///< making them
 };
 
 /// An ordered list of frames that can be loaded independently (and so in parallel).

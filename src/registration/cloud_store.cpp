@@ -1,0 +1,27 @@
+#include "sgtllc/registration/cloud_store.h"
+
+#include <utility>
+
+namespace sgtllc {
+
+CloudStore::CloudStore(const RegistrationConfig& config, const LabelConfig& labels)
+    : config_(config), labels_(labels) {}
+
+RegistrationClouds CloudStore::prepare(const LabeledCloud& cloud) const {
+  if (!enabled()) return {};
+  return {compactCloud(matchPoints(cloud, labels_, config_)), compactCloud(queryPoints(cloud, labels_, config_)).expand()};
+}
+
+void CloudStore::add(CompactCloud cloud) {
+  if (!enabled()) return;
+  bytes_ += cloud.bytes();
+  clouds_.push_back(std::move(cloud));
+}
+
+std::optional<Refinement> CloudStore::refine(const std::vector<Eigen::Vector3f>& query_points, int match,
+                                             const Eigen::Matrix4d& T_seed) const {
+  if (!enabled() || match < 0 || match >= size()) return std::nullopt;
+  return refinePose(query_points, clouds_[static_cast<size_t>(match)].expand(), T_seed, config_);
+}
+
+}  // namespace sgtllc

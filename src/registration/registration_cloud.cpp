@@ -1,0 +1,53 @@
+#include "sgtllc/registration/registration_cloud.h"
+
+#include <cmath>
+#include <string>
+
+#include "sgtllc/clustering.h"
+#include "sgtllc/node_extraction.h"
+
+namespace sgtllc {
+
+std::vector<Eigen::Vector3f> registrationPoints(const LabeledCloud& cloud, const LabelMap& labels, double voxel,
+                                                int max_points) {
+  if (cloud.points.size() != cloud.labels.size()) {
+    throw Error("registration: " + std::to_string(cloud.points.size()) + " points but " +
+                std::to_string(cloud.labels.size()) + " labels");
+  }
+  std::vector<Eigen::Vector3f> stable;
+  stable.reserve(cloud.points.size());
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    const Eigen::Vector3f& p = cloud.points[i];
+    if (labels.classOf(cloud.labels[i]) < 0 || !p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxCoordinate) continue;
+    stable.push_back(p);
+  }
+  std::vector<Eigen::Vector3f> voxels = voxelDownsample(stable, voxel).centroids;
+  const size_t cap = static_cast<size_t>(max_points);
+  if (voxels.size() <= cap) return voxels;
+  // An even stride over voxels in scan order keeps the cover of the whole scan, not its first sectors.
+  std::vector<Eigen::Vector3f> kept;
+  kept.reserve(cap);
+  for (size_t k = 0; k < cap; ++k) kept.push_back(voxels[k * voxels.size() / cap]);
+  return kept;
+}
+
+std::vector<Eigen::Vector3f> CompactCloud::expand() const {
+  std::vector<Eigen::Vector3f> out;
+  out.reserve(points.size());
+  for (const auto& q : points) out.emplace_back(q[0] * kStep, q[1] * kStep, q[2] * kStep);
+  return out;
+}
+
+CompactCloud compactCloud(const std::vector<Eigen::Vector3f>& points) {
+  CompactCloud out;
+  out.points.reserve(points.size());
+  for (const Eigen::Vector3f& p : points) {
+    const Eigen::Vector3f cells = (p / CompactCloud::kStep).array().round();
+    if (cells.cwiseAbs().maxCoeff() > 32767.0f) continue;
+    out.points.push_back({static_cast<int16_t>(cells.x()), static_cast<int16_t>(cells.y()),
+                          static_cast<int16_t>(cells.z())});
+  }
+  return out;
+}
+
+}  // namespace sgtllc
