@@ -81,6 +81,7 @@ std::vector<Range> ranges() {
   r.push_back({"verification.min_inlier_fraction", {"0", "1"}, {"-0.01", "1.5"}, "[0, 1]"});
   r.push_back({"verification.ransac_confidence", {"1e-09", "1"}, {"0", "1.001"}, "(0, 1]"});
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
+  r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
   r.push_back({"threads", {"1", "256"}, {"0", "257"}, "[1, 256]"});

@@ -45,7 +45,7 @@ struct FrameResult {
   ExtractionStats extraction;         ///< point bookkeeping (zeros when nodes were given)
   Search search = Search::kSearched;  ///< whether the database was searched; candidates is empty unless kSearched
   std::vector<Candidate> candidates;  ///< the retrieved candidates in ascending frame index, each verified
-  int best = -1;                      ///< index into candidates of the highest score_t (ties: higher frame), or −1
+  int best = -1;                      ///< index into candidates of the chosen one (selectCandidate), or −1
   bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
   StageTimes timing;
 
