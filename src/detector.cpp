@@ -81,6 +81,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   std::vector<const MatchResult*> matches;
   for (const Candidate& cand : result.candidates) matches.push_back(&cand.match);
   result.best = selectCandidate(matches, config_.verification);
+  result.lateral = result.best >= 0 && isLateral(result.candidates[result.best].match, config_.verification);
   result.is_loop = result.best >= 0 && isLoop(result.candidates[result.best].match, config_.verification);
   result.timing.verification_ms = msSince(start);
 

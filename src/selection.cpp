@@ -31,4 +31,9 @@ int selectCandidate(const std::vector<const MatchResult*>& matches, const Verifi
   return chosen;
 }
 
+bool isLateral(const MatchResult& match, const VerificationConfig& config) {
+  return match.rejection == Rejection::kNone &&
+         match.T_match_query.topRightCorner<3, 1>().norm() >= config.lateral_distance;
+}
+
 }  // namespace sgtllc

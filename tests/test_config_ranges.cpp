@@ -82,6 +82,7 @@ std::vector<Range> ranges() {
   r.push_back({"verification.ransac_confidence", {"1e-09", "1"}, {"0", "1.001"}, "(0, 1]"});
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
   r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
+  r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
   r.push_back({"threads", {"1", "256"}, {"0", "257"}, "[1, 256]"});
@@ -159,7 +160,7 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 8 * 3 + 23 + 18);  // 8 classes incl. vehicle, 23 other keys, 18 backend.* keys
+  EXPECT_EQ(numeric, 8 * 3 + 25 + 18);  // 8 classes incl. vehicle, 25 other keys, 18 backend.* keys
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

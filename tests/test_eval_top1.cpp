@@ -63,6 +63,7 @@ TEST(Top1Protocol, CountsByBandAndF1WithAndWithoutLateralMatches) {
   EXPECT_EQ(m.top1_no_lateral.n_negative, 1);
   EXPECT_DOUBLE_EQ(m.top1_no_lateral.f1_max, 0.75);
   EXPECT_DOUBLE_EQ(m.top1_no_lateral.ep, 0.75);
+  EXPECT_DOUBLE_EQ(m.top1_score_only.f1_max, m.top1.f1_max);  // nothing reported lateral here
   const Json j = sequenceMetricsJson(m);
   EXPECT_EQ(j["top1"]["near"], 3);
   EXPECT_EQ(j["top1"]["lateral"], 1);
@@ -71,18 +72,37 @@ TEST(Top1Protocol, CountsByBandAndF1WithAndWithoutLateralMatches) {
   EXPECT_DOUBLE_EQ(j["top1_no_lateral"]["f1_max"].get<double>(), 0.75);
 }
 
+TEST(Top1Protocol, ATop1TheDetectorReportsAsLateralIsNotClaimedAsARevisit) {
+  SequenceRun run;
+  run.frames.push_back(query(true, {{1.0, 0.8, true}}, 0));
+  run.frames.push_back(query(false, {{8.0, 0.7, true}}, 0));  // a neighbour 8 m away, the pose says so
+  run.frames.back().lateral = true;
+  run.frames.push_back(query(true, {{2.0, 0.5, true}}, 0));
+  const SequenceMetrics m = computeSequenceMetrics(run, EvalOptions{});
+  EXPECT_EQ(m.top1_counts.lateral, 1);
+  // Reported lateral: score 0, so 0.8 T, 0.5 T, 0 F → F1max 1 at 0.5, EP 1.
+  EXPECT_DOUBLE_EQ(m.top1.f1_max, 1.0);
+  EXPECT_DOUBLE_EQ(m.top1.ep, 1.0);
+  // score_t alone: 0.8 T, 0.7 F, 0.5 T → at 0.5 P 2/3, R 1 → F1 0.8; EP ½ (1 + ½).
+  EXPECT_DOUBLE_EQ(m.top1_score_only.f1_max, 0.8);
+  EXPECT_DOUBLE_EQ(m.top1_score_only.ep, 0.75);
+}
+
 TEST(Top1Protocol, LateralLoopsAreCountedApart) {
   SequenceRun run;
   for (double d : {1.0, 3.0, 12.0, 20.0, 20.5}) {
     FrameRecord f = query(true, {{d, 0.6, true}}, 0);
     f.is_loop = true;
+    f.lateral = d >= 12.0;  // the detector's own estimate: here it calls the 12 m, 20 m and 20.5 m ones lateral
     run.frames.push_back(f);
   }
   const SequenceMetrics m = computeSequenceMetrics(run, EvalOptions{});
   EXPECT_EQ(m.loops_true, 1);
   EXPECT_EQ(m.loops_lateral, 3);  // 3 m and 20 m are in the band (a positive is < 3 m, a negative > 20 m)
   EXPECT_EQ(m.loops_false, 1);
+  EXPECT_EQ(m.loops_reported_lateral, 3);
   EXPECT_EQ(sequenceMetricsJson(m)["loops"]["lateral"], 3);
+  EXPECT_EQ(sequenceMetricsJson(m)["loops"]["reported_lateral"], 3);
 }
 
 TEST(PairListProtocol, StoredNodesScoreAsTheScansDo) {

@@ -59,5 +59,15 @@ TEST(SelectCandidate, NeverTurnsALoopIntoNoLoop) {
   EXPECT_EQ(select({verified(0.18, 0.2), verified(0.25, 5.0)}, 0.1), 0);
 }
 
+TEST(IsLateral, TheEstimatedOffsetAgainstTheLateralDistance) {
+  VerificationConfig config;  // lateral_distance 3 m
+  EXPECT_FALSE(isLateral(verified(0.6, 2.97, 0.17), config));  // KITTI 00 4501 → 52: 2.975 m
+  EXPECT_TRUE(isLateral(verified(0.6, 3.0), config));          // on the bound: lateral
+  EXPECT_TRUE(isLateral(verified(0.6, 0.0, 6.5), config));     // one lane aside
+  EXPECT_FALSE(isLateral(rejected(0.9), config));              // no pose, no claim
+  config.lateral_distance = 7.0;
+  EXPECT_FALSE(isLateral(verified(0.6, 0.0, 6.5), config));
+}
+
 }  // namespace
 }  // namespace sgtllc

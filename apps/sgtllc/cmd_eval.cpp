@@ -221,8 +221,10 @@ void runEval(const EvalCliOptions& o) {
               << m.top1_counts.far << " > 20 m, " << m.top1_counts.none << " without a candidate; "
               << summaryLine("F1max", m.top1.f1_max) << ", " << summaryLine("EP", m.top1.ep)
               << "; 3-20 m left out: " << summaryLine("F1max", m.top1_no_lateral.f1_max) << ", "
-              << summaryLine("EP", m.top1_no_lateral.ep) << "\nloops detected " << m.loops_detected << " (true "
-              << m.loops_true << ", false " << m.loops_false << ", 3-20 m " << m.loops_lateral
+              << summaryLine("EP", m.top1_no_lateral.ep) << "; score_t alone: "
+              << summaryLine("F1max", m.top1_score_only.f1_max) << "\nloops detected " << m.loops_detected << " (true "
+              << m.loops_true << ", false " << m.loops_false << ", 3-20 m " << m.loops_lateral << "; reported lateral "
+              << m.loops_reported_lateral
               << "; with a correct pose at any distance " << m.loops_pose_correct << ", of the false "
               << m.loops_false_pose_correct << "); pose success " << fixed(m.poses.success_rate, 4) << ", mean RTE "
               << fixed(m.poses.rte_mean, 3) << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"

@@ -47,6 +47,7 @@ struct FrameResult {
   std::vector<Candidate> candidates;  ///< the retrieved candidates in ascending frame index, each verified
   int best = -1;                      ///< index into candidates of the chosen one (selectCandidate), or −1
   bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
+  bool lateral = false;               ///< candidates[best] is estimated ≥ verification.lateral_distance away
   StageTimes timing;
 
   /// The loop closure, or nullptr.

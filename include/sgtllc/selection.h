@@ -21,4 +21,8 @@ namespace sgtllc {
 /// loops are eligible, so the choice never turns a frame's loop into no loop.
 int selectCandidate(const std::vector<const MatchResult*>& matches, const VerificationConfig& config);
 
+/// Whether a verified match places the query at least `config.lateral_distance` from the candidate
+/// (‖t(T_match_query)‖): a lateral match, a neighbour of the revisit rather than the revisit.
+bool isLateral(const MatchResult& match, const VerificationConfig& config);
+
 }  // namespace sgtllc

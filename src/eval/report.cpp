@@ -106,7 +106,10 @@ std::string top1Section(const SequenceMetrics& m, const EvalOptions& options) {
      << c.near << " / " << c.lateral << " / " << c.far << " / " << c.none << " |\n"
      << "| F1max / EP, a top-1 ≥ " << pos << " m counted false | " << fixed(m.top1.f1_max, 4) << " / "
      << fixed(m.top1.ep, 4) << " |\n| F1max / EP, lateral top-1 left out | " << fixed(m.top1_no_lateral.f1_max, 4)
-     << " / " << fixed(m.top1_no_lateral.ep, 4) << " |\n\n";
+     << " / " << fixed(m.top1_no_lateral.ep, 4) << " |\n| F1max / EP, score_t alone (no lateral check) | "
+     << fixed(m.top1_score_only.f1_max, 4) << " / " << fixed(m.top1_score_only.ep, 4) << " |\n\n"
+     << "A top-1 the detector reports as lateral (its pose puts it ≥ verification.lateral_distance away) is not "
+        "claimed as a revisit: score 0 in the first two rows.\n\n";
   return md.str();
 }
 
@@ -132,6 +135,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   for (const CurveMetrics& c : m.pairwise) curves.emplace_back("pairwise", &c);
   curves.emplace_back("top1", &m.top1);
   curves.emplace_back("top1_no_lateral", &m.top1_no_lateral);
+  curves.emplace_back("top1_score_only", &m.top1_score_only);
   out.text("pr_curve.csv", prCsv(curves));
 
   std::ostringstream frames;

@@ -51,11 +51,13 @@ Json sequenceMetricsJson(const SequenceMetrics& m) {
             {"true", m.loops_true},
             {"false", m.loops_false},
             {"lateral", m.loops_lateral},
+            {"reported_lateral", m.loops_reported_lateral},
             {"pose_correct", m.loops_pose_correct},
             {"false_pose_correct", m.loops_false_pose_correct}}},
           {"poses", poseJson(m.poses)},
           {"top1", top1Json(m)},
           {"top1_no_lateral", curveJson(m.top1_no_lateral)},
+          {"top1_score_only", curveJson(m.top1_score_only)},
           {"distance_test", distance_test}};
 }
 

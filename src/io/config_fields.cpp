@@ -310,6 +310,9 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(number("verification.select_margin",
                      "top-1: the nearest (smallest translation) of the candidates within this of the best score_t; 0 = best",
                      [](Config& c) -> double& { return c.verification.select_margin; }));
+  f.push_back(number("verification.lateral_distance",
+                     "a chosen candidate estimated this far or farther (m) is reported as lateral, not a revisit",
+                     [](Config& c) -> double& { return c.verification.lateral_distance; }));
   f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
                                 [](Config& c) -> uint32_t& { return c.verification.seed; }));
   f.push_back(integer<int>("threads", "worker threads for candidate verification; results do not depend on it",
