@@ -138,6 +138,8 @@ void Config::validate() const {
   checkReal("verification.min_inlier_fraction", v.min_inlier_fraction, {0.0}, {1.0});
   checkReal("verification.ransac_confidence", v.ransac_confidence, {0.0, false}, {1.0});
   checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
+  checkReal("verification.select_margin", v.select_margin, {0.0}, {1.0});
+  checkReal("verification.lateral_distance", v.lateral_distance, {0.0, false}, {1000.0});
   validateRegistrationConfig(registration);
   checkInt("threads", threads, 1, kMaxThreads);
   validateBackendConfig(backend);

@@ -6,6 +6,7 @@
 
 #include "sgtllc/parallel.h"
 #include "sgtllc/retrieval/retrieval_key.h"
+#include "sgtllc/selection.h"
 
 namespace sgtllc {
 namespace {
@@ -103,12 +104,10 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
                       config_.numClasses());
     cand.match = matchFrames(query, candidate, config_);
   });
-  // Highest score_t wins; a tie goes to the later (higher-index) candidate, as the authors' `>=` (spec §7.4).
-  for (int c = 0; c < static_cast<int>(result.candidates.size()); ++c) {
-    const MatchResult& m = result.candidates[c].match;
-    if (m.rejection != Rejection::kNone) continue;
-    if (result.best < 0 || m.score_t >= result.candidates[result.best].match.score_t) result.best = c;
-  }
+  std::vector<const MatchResult*> matches;
+  for (const Candidate& cand : result.candidates) matches.push_back(&cand.match);
+  result.best = selectCandidate(matches, config_.verification);
+  result.lateral = result.best >= 0 && isLateral(result.candidates[result.best].match, config_.verification);
   result.is_loop = result.best >= 0 && isLoop(result.candidates[result.best].match, config_.verification);
   result.timing.verification_ms = msSince(start);
 

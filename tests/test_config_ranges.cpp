@@ -83,6 +83,8 @@ std::vector<Range> ranges() {
   r.push_back({"verification.min_inlier_fraction", {"0", "1"}, {"-0.01", "1.5"}, "[0, 1]"});
   r.push_back({"verification.ransac_confidence", {"1e-09", "1"}, {"0", "1.001"}, "(0, 1]"});
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
+  r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
+  r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
   r.push_back({"registration.voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
@@ -174,7 +176,7 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 8 * 3 + 25 + 18 + 14);  // 8 classes incl. vehicle, 25 other keys, 18 backend.*, 14 registration.*
+  EXPECT_EQ(numeric, 8 * 3 + 27 + 18 + 14);  // 8 classes incl. vehicle, 27 other keys, 18 backend.*, 14 registration.*
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

@@ -151,11 +151,17 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(paper.descriptor.global_mode, GlobalMode::kG1);
   EXPECT_EQ(paper.retrieval.key, RetrievalKey::kGlobalDescriptor);  // the paper retrieves by Des^G
   EXPECT_EQ(paper.verification.score_formula, ScoreFormula::kPaper);
+  EXPECT_EQ(paper.verification.sigma_3, 0.35);  // the paper's gates and top-1, not our defaults
+  EXPECT_EQ(paper.verification.min_associations, 7);
+  EXPECT_EQ(paper.verification.min_inliers, 5);
+  EXPECT_EQ(paper.verification.select_margin, 0.0);
   const Config code = io::loadConfig(dir + "authors-code.yaml");
   EXPECT_EQ(code.descriptor.global_mode, GlobalMode::kG2);
   EXPECT_EQ(code.retrieval.key, RetrievalKey::kGlobalDescriptor);
   EXPECT_EQ(code.verification.score_formula, ScoreFormula::kLegacy);
   EXPECT_EQ(code.verification.ransac_confidence, 1.0);
+  EXPECT_EQ(code.verification.sigma_3, 0.35);
+  EXPECT_EQ(code.verification.min_inliers, 5);
   const Config objects = io::loadConfig(dir + "kitti00-objects.yaml");
   EXPECT_EQ(objects.labels.preset, LabelPreset::kCustom);
   EXPECT_EQ(objects.labels.custom_map, (std::map<uint32_t, int>{{71, 3}, {80, 5}}));

@@ -128,7 +128,7 @@ TEST(SequenceMetricsCounts, LoopsByDistanceAndByPose) {
     FrameRecord f;
     f.frame = static_cast<long>(run.frames.size());
     f.queried = true;
-    f.candidates = {CandidateRecord{0, 0.6, 0.8, distance, 1.0, Rejection::kNone}};
+    f.candidates = {CandidateRecord{0, 0.6, 0.8, distance, 1.0, Rejection::kNone, distance}};
     f.best = 0;
     f.is_loop = true;
     f.pose_error = PoseError{rte, rre};

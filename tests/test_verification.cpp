@@ -122,9 +122,14 @@ TEST_F(MatchFrames, Gates) {
   cfg = sgtllc::Config{};
   cfg.verification.min_inliers = la + 1;
   expectRejected(sgtllc::matchFrames(query, match, cfg), sgtllc::Rejection::kRansacFailed);
-  // Six query nodes can give at most six associations: below |LA| ≥ 7.
+  // Six query nodes can give at most six associations: below the paper's |LA| ≥ 7 (configs/paper.yaml) ...
   const std::vector<Node> six(nodes_.begin(), nodes_.begin() + 6);
-  expectRejected(sgtllc::matchFrames(describe(six), match, sgtllc::Config{}), sgtllc::Rejection::kFewAssociations);
+  sgtllc::Config paper;
+  paper.verification.min_associations = 7;
+  expectRejected(sgtllc::matchFrames(describe(six), match, paper), sgtllc::Rejection::kFewAssociations);
+  // ... and two below the default |LA| ≥ 3, the fewest a rigid fit needs.
+  const std::vector<Node> two(nodes_.begin(), nodes_.begin() + 2);
+  expectRejected(sgtllc::matchFrames(describe(two), match, sgtllc::Config{}), sgtllc::Rejection::kFewAssociations);
 }
 
 TEST(MatchFramesReal, LoopAndNonLoopPairs) {

@@ -23,6 +23,7 @@ struct EvalCliOptions {
   int threads = 0;
   bool json = false;
   bool force = false;
+  bool no_pairs = false;  ///< --no-pairs: skip the folder's loop_pairs.txt
   std::string command;
 };
 
@@ -47,6 +48,30 @@ void checkReportFolder(const EvalCliOptions& o) {
 }
 
 std::string summaryLine(const char* name, double value) { return std::string(name) + " " + fixed(value, 4); }
+
+/// The pair-list protocol's terminal lines.
+std::string pairListSummary(const eval::PairListMetrics& m) {
+  std::string out = "pairs " + std::to_string(m.n_pairs) + ", scored " + std::to_string(m.n_available) +
+                    " (both frames present), positives " + std::to_string(m.curve.n_positive) + ", negatives " +
+                    std::to_string(m.curve.n_negative) + " (" + std::to_string(m.positives_scored_zero) +
+                    " positives scored 0)\ndecisions equal to the label: " + std::to_string(m.correct) + " of " +
+                    std::to_string(m.n_available) + "\n" + summaryLine("F1max", m.curve.f1_max) + ", " +
+                    summaryLine("EP", m.curve.ep) + ", " +
+                    summaryLine("recall@100%precision", m.curve.recall_at_100_precision) + "\npose: " +
+                    std::to_string(m.poses.successes) + " of " + std::to_string(m.poses.evaluated) +
+                    " detected true loops within 2 m / 5 deg";
+  if (m.poses.successes) {
+    out += ", mean RTE " + fixed(m.poses.rte_mean, 3) + " m, RRE " + fixed(m.poses.rre_mean, 3) + " deg";
+  }
+  return out + "\n";
+}
+
+/// "Only N of M listed pairs ..." when some listed frames are not in the input, else "".
+std::string pairListNote(const eval::PairListRun& run, const eval::PairListMetrics& m) {
+  if (run.unavailable == 0) return "";
+  return "Only " + std::to_string(m.n_available) + " of " + std::to_string(m.n_pairs) +
+         " listed pairs have both frames in the input; the metrics cover those pairs only.";
+}
 
 const std::vector<std::string> kClosingReportFiles = {"trajectory_topview.png", "corrected_trajectory.txt"};
 
@@ -78,6 +103,47 @@ struct EvalClosing {
     io::writeTrajectory((fs::path(dir) / "corrected_trajectory.txt").string(),
                         io::withPoses(odometry->trajectory, closing.poses), io::overwriteIf(force));
     plotClosing((fs::path(dir) / "trajectory_topview.png").string(), truth, *odometry, loops, closing);
+  }
+};
+
+/// The pair-list protocol on the sequence folder's loop_pairs.txt (the simulator writes one), run after the
+/// online protocol on the nodes it stored, so one `sgtllc eval SEQ` reports all three protocols.
+struct FolderPairs {
+  std::string path;  ///< empty: no loop_pairs.txt, --pairs given, or --no-pairs
+  std::vector<eval::LoopPairLabel> pairs;
+  std::vector<long> numbers;
+  std::vector<std::vector<Node>> nodes;
+  eval::PairListRun run;
+  eval::PairListMetrics metrics;
+
+  FolderPairs(const EvalCliOptions& o, eval::EvalOptions& options) {
+    const fs::path file = fs::path(o.sequence) / "loop_pairs.txt";
+    if (!o.pairs.empty() || o.no_pairs || !fs::exists(file)) return;
+    path = file.string();
+    pairs = eval::readPairList(path);  // before the run: a malformed list fails fast
+    auto chained = options.on_frame;
+    options.on_frame = [this, chained](size_t i, const FrameResult& r, const LoopDetector& detector) {
+      nodes.push_back(detector.database().nodes(r.frame));
+      numbers.push_back(static_cast<long>(i));
+      if (chained) chained(i, r, detector);
+    };
+  }
+  bool active() const { return !path.empty(); }
+  void finish(const eval::SequenceRun& seq, const eval::GroundTruth& truth, const Config& config,
+              const eval::EvalOptions& options, eval::ReportExtra& extra) {
+    if (!active()) return;
+    for (size_t i = 0; i < numbers.size(); ++i) numbers[i] = seq.frames[i].frame;
+    eval::EvalOptions quiet = options;
+    quiet.progress = nullptr;
+    run = eval::runPairListEvaluation(numbers, nodes, pairs, truth, config, quiet);
+    metrics = eval::computePairListMetrics(run, options);
+    extra.metrics["pair_list"] = json();
+    extra.section += eval::pairListSection(metrics, path, pairListNote(run, metrics));
+  }
+  Json json() const {
+    Json j = eval::pairListMetricsJson(metrics, run, 0);
+    j["file"] = path;
+    return j;
   }
 };
 
@@ -114,30 +180,20 @@ void runEval(const EvalCliOptions& o) {
     options.progress = nullptr;  // pairs are scored in parallel; no per-frame progress
     const eval::PairListRun run = eval::runPairListEvaluation(source, pairs, truth, config, options);
     const eval::PairListMetrics m = eval::computePairListMetrics(run, options);
-    if (run.unavailable > 0) {
-      info.data_note = "Only " + std::to_string(m.n_available) + " of " + std::to_string(m.n_pairs) +
-                       " listed pairs have both frames in the input; the metrics cover those pairs only.";
-    }
+    info.data_note = pairListNote(run, m);
     if (!o.report.empty()) eval::writePairListReport(o.report, run, m, info, io::overwriteIf(o.force));
     if (o.json) {
       std::cout << jsonText(eval::pairListMetricsJson(m, run)) << "\n";
       return;
     }
-    std::cout << "pairs " << m.n_pairs << ", scored " << m.n_available << " (both frames present), positives "
-              << m.curve.n_positive << ", negatives " << m.curve.n_negative << "\n"
-              << "decisions equal to the label: " << m.correct << " of " << m.n_available << "\n"
-              << summaryLine("F1max", m.curve.f1_max) << ", " << summaryLine("EP", m.curve.ep) << ", "
-              << summaryLine("recall@100%precision", m.curve.recall_at_100_precision) << "\n"
-              << "pose: " << m.poses.successes << " of " << m.poses.evaluated << " detected true loops within 2 m / 5 deg"
-              << (m.poses.successes ? ", mean RTE " + fixed(m.poses.rte_mean, 3) + " m, RRE " +
-                                          fixed(m.poses.rre_mean, 3) + " deg"
-                                    : std::string())
-              << "\n";
+    std::cout << pairListSummary(m);
   } else {
     const eval::GroundTruth truth = loadTruth(o.sequence, true);
+    FolderPairs folder_pairs(o, options);
     const eval::SequenceRun run = eval::runSequenceEvaluation(source, truth, config, options);
     progress.finish();
     const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
+    folder_pairs.finish(run, truth, config, options, extra);
     if (back.odometry) {
       back.finish(run, truth, config);
       writeClosingOutputs(o.outputs, *back.odometry, back.loops, back.closing, config.backend, o.force);
@@ -161,13 +217,20 @@ void runEval(const EvalCliOptions& o) {
               << summaryLine("F1max", main.f1_max) << ", " << summaryLine("EP", main.ep) << ", "
               << summaryLine("recall@100%precision", main.recall_at_100_precision) << ", "
               << summaryLine("retrieval recall@15", m.retrieval_recall) << "\n"
-              << "top-1 per query: " << summaryLine("F1max", m.top1.f1_max) << ", " << summaryLine("EP", m.top1.ep)
-              << "\nloops detected " << m.loops_detected << " (true " << m.loops_true << ", false " << m.loops_false
+              << "top-1 per query: " << m.top1_counts.near << " < 3 m, " << m.top1_counts.lateral << " 3-20 m, "
+              << m.top1_counts.far << " > 20 m, " << m.top1_counts.none << " without a candidate; "
+              << summaryLine("F1max", m.top1.f1_max) << ", " << summaryLine("EP", m.top1.ep)
+              << "; 3-20 m left out: " << summaryLine("F1max", m.top1_no_lateral.f1_max) << ", "
+              << summaryLine("EP", m.top1_no_lateral.ep) << "; score_t alone: "
+              << summaryLine("F1max", m.top1_score_only.f1_max) << "\nloops detected " << m.loops_detected << " (true "
+              << m.loops_true << ", false " << m.loops_false << ", 3-20 m " << m.loops_lateral << "; reported lateral "
+              << m.loops_reported_lateral
               << "; with a correct pose at any distance " << m.loops_pose_correct << ", of the false "
               << m.loops_false_pose_correct << "); pose success " << fixed(m.poses.success_rate, 4) << ", mean RTE "
               << fixed(m.poses.rte_mean, 3) << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"
               << "ms per frame: median " << fixed(m.ms_per_frame_median, 2) << ", p99 " << fixed(m.ms_per_frame_p99, 2)
               << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n";
+    if (folder_pairs.active()) std::cout << "pair list " << folder_pairs.path << ":\n" << pairListSummary(folder_pairs.metrics);
     if (back.odometry) std::cout << back.summary << comparisonText(back.comparison);
   }
   if (!o.report.empty()) std::cout << "report: " << (fs::path(o.report) / "report.md").string() << "\n";
@@ -182,6 +245,9 @@ void addEvalCommand(CLI::App& app) {
                   "sequence folder: velodyne/, labels/, poses.txt (KITTI cam0 poses) and calib.txt (Tr)")
       ->required();
   cmd->add_option("--pairs", o->pairs, "evaluate these 'query candidate label' pairs instead of the online protocol");
+  cmd->add_flag("--no-pairs", o->no_pairs,
+                "without --pairs, the folder's loop_pairs.txt (if any) is scored too, on the frames already read; "
+                "this skips it");
   cmd->add_option("--nodes", o->nodes, "read frames from node files NAME.txt (x y z label rows) in this folder");
   cmd->add_option("--report", o->report, "write report.md, metrics.json, CSV tables and PNG plots to this folder");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");

@@ -85,7 +85,7 @@ void runSequence(const RunOptions& o) {
         const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();
         std::cout << "loop " << l.query << " -> " << l.match << "  score " << fixed(l.score, 3) << "  score_c "
                   << fixed(l.score_c, 3) << "  t = (" << fixed(t.x(), 2) << ", " << fixed(t.y(), 2) << ", "
-                  << fixed(t.z(), 2) << ") m\n"
+                  << fixed(t.z(), 2) << ") m" << (r.lateral ? "  lateral (a neighbour of the revisit)" : "") << "\n"
                   << std::flush;
       }
       if (online) {

@@ -52,8 +52,9 @@ struct FrameResult {
   ExtractionStats extraction;         ///< point bookkeeping (zeros when nodes were given)
   Search search = Search::kSearched;  ///< whether the database was searched; candidates is empty unless kSearched
   std::vector<Candidate> candidates;  ///< the retrieved candidates in ascending frame index, each verified
-  int best = -1;                      ///< index into candidates of the highest score_t (ties: higher frame), or −1
+  int best = -1;                      ///< index into candidates of the chosen one (selectCandidate), or −1
   bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
+  bool lateral = false;               ///< candidates[best] is estimated ≥ verification.lateral_distance away
   StageTimes timing;
 
   /// The loop closure, or nullptr.

@@ -1,6 +1,7 @@
 #include "sgtllc/eval/pair_eval.h"
 
 #include <exception>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -48,16 +49,13 @@ std::vector<LoopPairLabel> readPairList(const std::string& path) {
   return pairs;
 }
 
-PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<LoopPairLabel>& pairs,
-                                  const GroundTruth& truth, const Config& config, const EvalOptions& options) {
-  config.validate();
-  std::map<long, size_t> index_of;
-  for (size_t i = 0; i < source.size(); ++i) index_of[source.number(i)] = i;
+namespace {
 
-  // Each frame that any available pair needs is read and clustered once.
+/// Marks which pairs have both frames (index_of maps a frame number to its slot in the caller's frames) and
+/// lists, in first-use order, the slots any available pair needs.
+PairListRun planPairs(const std::vector<LoopPairLabel>& pairs, const std::map<long, size_t>& index_of,
+                      std::vector<size_t>* needed, std::map<long, size_t>* slot_of) {
   PairListRun run;
-  std::map<long, size_t> slot_of;
-  std::vector<size_t> to_load;
   for (const LoopPairLabel& p : pairs) {
     PairRecord r;
     r.pair = p;
@@ -65,16 +63,23 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
     run.unavailable += !r.available;
     if (r.available) {
       for (long f : {p.query, p.candidate}) {
-        if (slot_of.emplace(f, to_load.size()).second) to_load.push_back(index_of[f]);
+        if (slot_of->emplace(f, needed->size()).second) needed->push_back(index_of.at(f));
       }
     }
     run.pairs.push_back(r);
   }
-  std::vector<DescribedFrame> frames(to_load.size());
-  std::vector<std::exception_ptr> errors(to_load.size());
-  parallelFor(static_cast<int>(to_load.size()), options.threads, [&](int k) {
+  return run;
+}
+
+/// Describes the needed frames in parallel (@p nodes_of gives a frame's nodes by the caller's index).
+std::vector<DescribedFrame> describeNeeded(const std::vector<size_t>& needed,
+                                           const std::function<std::vector<Node>(size_t)>& nodes_of,
+                                           const Config& config, int threads) {
+  std::vector<DescribedFrame> frames(needed.size());
+  std::vector<std::exception_ptr> errors(needed.size());
+  parallelFor(static_cast<int>(needed.size()), threads, [&](int k) {
     try {
-      frames[k] = describeFrame(source.load(to_load[k]).nodes, config.graph, config.descriptor, /*with_global=*/true,
+      frames[k] = describeFrame(nodes_of(needed[k]), config.graph, config.descriptor, /*with_global=*/true,
                                 config.numClasses());
     } catch (...) {
       errors[k] = std::current_exception();
@@ -83,7 +88,11 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }
+  return frames;
+}
 
+void scorePairs(PairListRun& run, const std::vector<DescribedFrame>& frames, const std::map<long, size_t>& slot_of,
+                const GroundTruth& truth, const Config& config, const EvalOptions& options) {
   parallelFor(static_cast<int>(run.pairs.size()), options.threads, [&](int k) {
     PairRecord& r = run.pairs[k];
     if (!r.available) return;
@@ -99,6 +108,35 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
     }
   });
   if (options.progress) options.progress(run.pairs.size(), run.pairs.size(), 0);
+}
+
+}  // namespace
+
+PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<LoopPairLabel>& pairs,
+                                  const GroundTruth& truth, const Config& config, const EvalOptions& options) {
+  config.validate();
+  std::map<long, size_t> index_of, slot_of;
+  for (size_t i = 0; i < source.size(); ++i) index_of[source.number(i)] = i;
+  // Each frame that any available pair needs is read and clustered once.
+  std::vector<size_t> needed;
+  PairListRun run = planPairs(pairs, index_of, &needed, &slot_of);
+  const auto frames =
+      describeNeeded(needed, [&source](size_t i) { return source.load(i).nodes; }, config, options.threads);
+  scorePairs(run, frames, slot_of, truth, config, options);
+  return run;
+}
+
+PairListRun runPairListEvaluation(const std::vector<long>& numbers, const std::vector<std::vector<Node>>& nodes,
+                                  const std::vector<LoopPairLabel>& pairs, const GroundTruth& truth,
+                                  const Config& config, const EvalOptions& options) {
+  config.validate();
+  if (numbers.size() != nodes.size()) throw Error("runPairListEvaluation: one node set per frame number is needed");
+  std::map<long, size_t> index_of, slot_of;
+  for (size_t i = 0; i < numbers.size(); ++i) index_of[numbers[i]] = i;
+  std::vector<size_t> needed;
+  PairListRun run = planPairs(pairs, index_of, &needed, &slot_of);
+  const auto frames = describeNeeded(needed, [&nodes](size_t i) { return nodes[i]; }, config, options.threads);
+  scorePairs(run, frames, slot_of, truth, config, options);
   return run;
 }
 
@@ -112,6 +150,7 @@ PairListMetrics computePairListMetrics(const PairListRun& run, const EvalOptions
     ++m.n_available;
     samples.push_back({r.score_t, r.pair.loop});
     m.correct += r.is_loop == r.pair.loop;
+    m.positives_scored_zero += r.pair.loop && r.score_t == 0.0;
     if (r.pose_evaluated) errors.push_back(r.pose_error);
   }
   m.curve = curveMetrics(samples, options.positive_distances.at(0));

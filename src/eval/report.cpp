@@ -80,7 +80,46 @@ std::string configSection(const ReportInfo& info) {
   return info.config_yaml.empty() ? "" : "## Configuration\n\n```yaml\n" + info.config_yaml + "```\n";
 }
 
+std::string pairListTable(const PairListMetrics& m) {
+  std::ostringstream md;
+  md << "| metric | value |\n|---|---|\n| pairs listed / scored | " << m.n_pairs << " / " << m.n_available
+     << " (the others name frames that are not in the input) |\n| positives / negatives scored | "
+     << m.curve.n_positive << " / " << m.curve.n_negative << " |\n| positives scored 0 (rejected by a gate or "
+     << "RANSAC) | " << m.positives_scored_zero << " |\n| decisions equal to the label | " << m.correct << " of "
+     << m.n_available << " |\n| F1max | " << fixed(m.curve.f1_max, 4) << " |\n| EP | " << fixed(m.curve.ep, 4)
+     << " |\n| recall at 100 % precision | " << fixed(m.curve.recall_at_100_precision, 4)
+     << " |\n| pose success rate | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes << " of "
+     << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3) << " m / "
+     << fixed(m.poses.rre_mean, 3) << "° |\n";
+  return md.str();
+}
+
+/// The top-1 protocol with its distance bands (issue 13 item 6).
+std::string top1Section(const SequenceMetrics& m, const EvalOptions& options) {
+  const std::string pos = fixed(options.positive_distances.at(0), 0), neg = fixed(options.negative_distance, 0);
+  const Top1Counts& c = m.top1_counts;
+  std::ostringstream md;
+  md << "## Top-1 per query\n\nEach query's chosen candidate (its nearest global descriptor, score 0, if none "
+        "passed verification); recall counts against the "
+     << m.n_revisit_queries << " queries with a revisit < " << pos << " m.\n\n| top-1 | value |\n|---|---|\n"
+     << "| top-1 < " << pos << " m / " << pos << "–" << neg << " m (lateral) / > " << neg << " m / no candidate | "
+     << c.near << " / " << c.lateral << " / " << c.far << " / " << c.none << " |\n"
+     << "| F1max / EP, a top-1 ≥ " << pos << " m counted false | " << fixed(m.top1.f1_max, 4) << " / "
+     << fixed(m.top1.ep, 4) << " |\n| F1max / EP, lateral top-1 left out | " << fixed(m.top1_no_lateral.f1_max, 4)
+     << " / " << fixed(m.top1_no_lateral.ep, 4) << " |\n| F1max / EP, score_t alone (no lateral check) | "
+     << fixed(m.top1_score_only.f1_max, 4) << " / " << fixed(m.top1_score_only.ep, 4) << " |\n\n"
+     << "A top-1 the detector reports as lateral (its pose puts it ≥ verification.lateral_distance away) is not "
+        "claimed as a revisit: score 0 in the first two rows.\n\n";
+  return md.str();
+}
+
 }  // namespace
+
+std::string pairListSection(const PairListMetrics& m, const std::string& file, const std::string& note) {
+  return "## Pair list\n\nEvery `query candidate label` pair of `" + file +
+         "` scored on the frames of this run (the label as given).\n\n" + (note.empty() ? "" : note + "\n\n") +
+         pairListTable(m) + "\n";
+}
 
 std::vector<std::string> sequenceReportFiles(const std::string& dir) { return inFolder(dir, kSequenceFiles); }
 std::vector<std::string> pairListReportFiles(const std::string& dir) { return inFolder(dir, kPairListFiles); }
@@ -95,6 +134,8 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   std::vector<std::pair<std::string, const CurveMetrics*>> curves;
   for (const CurveMetrics& c : m.pairwise) curves.emplace_back("pairwise", &c);
   curves.emplace_back("top1", &m.top1);
+  curves.emplace_back("top1_no_lateral", &m.top1_no_lateral);
+  curves.emplace_back("top1_score_only", &m.top1_score_only);
   out.text("pr_curve.csv", prCsv(curves));
 
   std::ostringstream frames;
@@ -113,11 +154,11 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   out.text("frames.csv", frames.str());
 
   std::ostringstream pairs;
-  pairs << "query,candidate,distance_m,score,score_c,rejection\n";
+  pairs << "query,candidate,distance_m,score,score_c,rejection,estimated_distance_m\n";
   for (const FrameRecord& f : run.frames) {
     for (const CandidateRecord& c : f.candidates) {
       pairs << f.frame << "," << c.frame << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
-            << rejectionName(c.rejection) << "\n";
+            << rejectionName(c.rejection) << "," << c.estimated_distance << "\n";
     }
   }
   out.text("candidates.csv", pairs.str());
@@ -140,7 +181,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
      << " |\n| frames / queries / queries with a revisit | " << m.n_frames << " / " << m.n_queries << " / "
      << m.n_revisit_queries << " |\n| scored pairs: positive / negative | " << main.n_positive << " / "
      << main.n_negative << " |\n| detected loops: true / false / 3–20 m | " << m.loops_true << " / "
-     << m.loops_false << " / " << (m.loops_detected - m.loops_true - m.loops_false)
+     << m.loops_false << " / " << m.loops_lateral
      << " |\n| detected loops with a correct pose (RTE < " << fixed(options.success_translation, 0) << " m, RRE < "
      << fixed(options.success_rotation, 0) << "°), at any distance: all / false | " << m.loops_pose_correct << " of "
      << m.loops_detected << " / " << m.loops_false_pose_correct << " of " << m.loops_false
@@ -154,7 +195,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   if (!run.contiguous) {
     md << "Note: frame numbers are not 0, 1, 2, …; the exclusion gap counted processed frames, not frame numbers.\n\n";
   }
-  md << extra.section;
+  md << top1Section(m, options) << extra.section;
   md << "## Distance test\n\n| positive < | F1max | EP | positives |\n|---|---|---|---|\n";
   for (const CurveMetrics& c : m.pairwise) {
     md << "| " << fixed(c.positive_distance, 0) << " m | " << fixed(c.f1_max, 4) << " | " << fixed(c.ep, 4) << " | "
@@ -190,14 +231,7 @@ void writePairListReport(const std::string& dir, const PairListRun& run, const P
 
   std::ostringstream md;
   md << "# Loop-closure evaluation over a pair list\n\n" << provenance(info);
-  md << "| metric | value |\n|---|---|\n| pairs listed / scored | " << m.n_pairs << " / " << m.n_available
-     << " (the others name frames that are not in the input) |\n| positives / negatives scored | "
-     << m.curve.n_positive << " / " << m.curve.n_negative << " |\n| decisions equal to the label | " << m.correct
-     << " of " << m.n_available << " |\n| F1max | " << fixed(m.curve.f1_max, 4) << " |\n| EP | "
-     << fixed(m.curve.ep, 4) << " |\n| recall at 100 % precision | " << fixed(m.curve.recall_at_100_precision, 4)
-     << " |\n| pose success rate | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes << " of "
-     << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3) << " m / "
-     << fixed(m.poses.rre_mean, 3) << "° |\n\n![PR curve](pr_curves.png)\n\nPer pair: `pairs.csv`.\n\n"
+  md << pairListTable(m) << "\n![PR curve](pr_curves.png)\n\nPer pair: `pairs.csv`.\n\n"
      << configSection(info);
   out.text("report.md", md.str());
 }

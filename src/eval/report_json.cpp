@@ -14,6 +14,16 @@ Json poseJson(const PoseSummary& p) {
           {"rte_mean_m", p.rte_mean}, {"rre_mean_deg", p.rre_mean}};
 }
 
+/// The top-1 curve with where the top-1 candidates lie.
+Json top1Json(const SequenceMetrics& m) {
+  Json j = curveJson(m.top1);
+  j["near"] = m.top1_counts.near;
+  j["lateral"] = m.top1_counts.lateral;
+  j["far"] = m.top1_counts.far;
+  j["no_candidate"] = m.top1_counts.none;
+  return j;
+}
+
 }  // namespace
 
 Json sequenceMetricsJson(const SequenceMetrics& m) {
@@ -40,10 +50,14 @@ Json sequenceMetricsJson(const SequenceMetrics& m) {
            {{"detected", m.loops_detected},
             {"true", m.loops_true},
             {"false", m.loops_false},
+            {"lateral", m.loops_lateral},
+            {"reported_lateral", m.loops_reported_lateral},
             {"pose_correct", m.loops_pose_correct},
             {"false_pose_correct", m.loops_false_pose_correct}}},
           {"poses", poseJson(m.poses)},
-          {"top1", curveJson(m.top1)},
+          {"top1", top1Json(m)},
+          {"top1_no_lateral", curveJson(m.top1_no_lateral)},
+          {"top1_score_only", curveJson(m.top1_score_only)},
           {"distance_test", distance_test}};
 }
 
@@ -57,6 +71,7 @@ Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_
               {"n_positive", m.curve.n_positive},
               {"n_negative", m.curve.n_negative},
               {"correct", m.correct},
+              {"positives_scored_zero", m.positives_scored_zero},
               {"rte_mean", m.poses.rte_mean},
               {"rre_mean", m.poses.rre_mean},
               {"success_rate", m.poses.success_rate},

@@ -40,10 +40,12 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
     for (const Candidate& c : r.candidates) {
       const long f = numbers[static_cast<size_t>(c.frame)];
       rec.candidates.push_back(CandidateRecord{f, c.match.score_t, c.match.score_c, truth.distance(rec.frame, f),
-                                               c.distance2, c.match.rejection});
+                                               c.distance2, c.match.rejection,
+                                               c.match.T_match_query.topRightCorner<3, 1>().norm()});
     }
     rec.best = r.best;
     rec.is_loop = r.is_loop;
+    rec.lateral = r.lateral;
     if (const Candidate* loop = r.loop()) {
       ++loops;
       rec.T_match_query = loop->match.T_match_query;
@@ -93,10 +95,10 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
     out.pairwise.push_back(curveMetrics(samples, d));
   }
 
-  // Top-1 protocol: each query's best candidate (or, if none passed the gates, its nearest global descriptor)
-  // with its score; recall counts against all queries that have a true revisit. A wrong best candidate is a false
-  // positive whatever its distance.
-  std::vector<ScoredSample> top1;
+  // Top-1 protocol: each query's chosen candidate (or, if none passed the gates, its nearest global descriptor)
+  // with its score; recall counts against all queries that have a true revisit. A wrong top-1 is a false positive
+  // whatever its distance; the second curve leaves out the lateral ones (3–20 m), as the pairwise protocol does.
+  std::vector<ScoredSample> top1, top1_no_lateral, top1_score_only;
   std::vector<double> frame_ms;
   for (const FrameRecord& f : run.frames) {
     frame_ms.push_back(f.timing.total_ms());
@@ -106,18 +108,27 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
     bool retrieved = false;
     for (const CandidateRecord& c : f.candidates) retrieved = retrieved || c.distance < positive;
     out.retrieval_recall += f.has_revisit && retrieved;
-    if (!f.candidates.empty()) {
+    if (f.candidates.empty()) {
+      ++out.top1_counts.none;
+    } else {
       const auto nearest = std::min_element(f.candidates.begin(), f.candidates.end(), [](const auto& a, const auto& b) {
         return a.descriptor_distance2 < b.descriptor_distance2;
       });
       const CandidateRecord& c = f.best >= 0 ? f.candidates[static_cast<size_t>(f.best)] : *nearest;
-      top1.push_back({f.best >= 0 ? c.score_t : 0.0, c.distance < positive});
+      const ScoredSample sample{f.best >= 0 && !f.lateral ? c.score_t : 0.0, c.distance < positive};
+      top1.push_back(sample);
+      top1_score_only.push_back({f.best >= 0 ? c.score_t : 0.0, sample.positive});
+      const bool lateral = !sample.positive && c.distance <= options.negative_distance;
+      if (!lateral) top1_no_lateral.push_back(sample);
+      ++(sample.positive ? out.top1_counts.near : lateral ? out.top1_counts.lateral : out.top1_counts.far);
     }
     if (f.is_loop) {
       ++out.loops_detected;
       const double d = f.candidates[static_cast<size_t>(f.best)].distance;
       out.loops_true += d < positive;
       out.loops_false += d > options.negative_distance;
+      out.loops_lateral += d >= positive && d <= options.negative_distance;
+      out.loops_reported_lateral += f.lateral;
       const bool pose_ok = f.pose_error.succeeds(options.success_translation, options.success_rotation);
       out.loops_pose_correct += pose_ok;
       out.loops_false_pose_correct += pose_ok && d > options.negative_distance;
@@ -125,6 +136,8 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
   }
   out.retrieval_recall = out.n_revisit_queries > 0 ? out.retrieval_recall / out.n_revisit_queries : 0.0;
   out.top1 = curveMetrics(top1, positive, out.n_revisit_queries);
+  out.top1_no_lateral = curveMetrics(top1_no_lateral, positive, out.n_revisit_queries);
+  out.top1_score_only = curveMetrics(top1_score_only, positive, out.n_revisit_queries);
 
   std::vector<PoseError> errors;
   for (const FrameRecord& f : run.frames) {

@@ -315,6 +315,12 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                                     {"overlap", ScoreFormula::kOverlap}}));
   f.push_back(number("verification.sigma_4", "σ_4: loop iff best score_t > σ_4 (0.1 for MulRan/MCD)",
                      [](Config& c) -> double& { return c.verification.sigma_4; }));
+  f.push_back(number("verification.select_margin",
+                     "top-1: the nearest (smallest translation) of the candidates within this of the best score_t; 0 = best",
+                     [](Config& c) -> double& { return c.verification.select_margin; }));
+  f.push_back(number("verification.lateral_distance",
+                     "a chosen candidate estimated this far or farther (m) is reported as lateral, not a revisit",
+                     [](Config& c) -> double& { return c.verification.lateral_distance; }));
   f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
                                 [](Config& c) -> uint32_t& { return c.verification.seed; }));
   const BackendFieldMakers makers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },

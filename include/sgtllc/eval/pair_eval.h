@@ -44,12 +44,19 @@ struct PairListRun {
 /// @p truth may be empty (no poses): then no pose errors are computed.
 PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<LoopPairLabel>& pairs,
                                   const GroundTruth& truth, const Config& config, const EvalOptions& options);
+/// The same on frames already reduced to nodes, e.g. those an online run stored (`sgtllc eval` scores a
+/// sequence's loop_pairs.txt this way without reading the scans again): @p nodes[i] are the nodes of frame number
+/// @p numbers[i]. Throws sgtllc::Error if the two differ in length.
+PairListRun runPairListEvaluation(const std::vector<long>& numbers, const std::vector<std::vector<Node>>& nodes,
+                                  const std::vector<LoopPairLabel>& pairs, const GroundTruth& truth,
+                                  const Config& config, const EvalOptions& options);
 
 struct PairListMetrics {
   CurveMetrics curve;     ///< over the available pairs, labels as given
   int n_pairs = 0;
   int n_available = 0;
   int correct = 0;        ///< available pairs whose decision (score_t > σ_4) equals the label
+  int positives_scored_zero = 0;  ///< available pairs labelled loop whose score_t is 0 (a gate or RANSAC failed)
   PoseSummary poses;
 };
 

@@ -32,11 +32,19 @@ struct ReportExtra {
 
 /// Sequence metrics with the keys `f1_max`, `ep`, `recall_at_100_precision`, `retrieval_recall_at_15`,
 /// `rte_mean`, `rre_mean`, `success_rate`, `n_queries`, `n_positive`, `ms_per_frame_median`, `ms_per_frame_p99`,
-/// `db_bytes_per_frame`, and the top-1 protocol, distance test and loop counts.
+/// `db_bytes_per_frame`, the distance test, `loops` (`detected`, `true`, `false`, `lateral` = 3–20 m, …), and the
+/// top-1 protocol: `top1` (its curve's `f1_max`, `ep`, …, `n_positive`, `n_negative`, and where the top-1
+/// candidates lie: `near` < 3 m, `lateral` 3–20 m, `far` > 20 m, `no_candidate`) and `top1_no_lateral` (the same
+/// curve with the lateral top-1 left out) and `top1_score_only` (score_t alone, no lateral check); `loops` also
+/// has `reported_lateral` (loops the detector itself reported as lateral).
 Json sequenceMetricsJson(const SequenceMetrics& m);
 /// Pair-list metrics (`f1_max`, `ep`, `recall_at_100_precision`, counts, pose summary) and, for lists of at most
 /// @p list_limit pairs, every pair's result.
 Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_t list_limit = 100);
+
+/// The pair-list protocol as a report.md section ("## Pair list"), for a sequence report that scores the folder's
+/// loop_pairs.txt too (ReportExtra::section); @p note (if any) says which pairs were left out.
+std::string pairListSection(const PairListMetrics& m, const std::string& file, const std::string& note);
 
 /// Every file writeSequenceReport() writes into @p dir, report.md last.
 std::vector<std::string> sequenceReportFiles(const std::string& dir);

@@ -39,6 +39,7 @@ struct CandidateRecord {
   double distance = 0.0;       ///< ground-truth distance to the query (m)
   double descriptor_distance2 = 0.0;  ///< squared L2 distance of the global descriptors
   Rejection rejection = Rejection::kFewAssociations;
+  double estimated_distance = 0.0;  ///< ‖t(T_match_query)‖, the verified pose's offset (m); 0 unless verified
 };
 
 /// Everything measured for one frame.
@@ -51,6 +52,7 @@ struct FrameRecord {
   std::vector<CandidateRecord> candidates;  ///< ascending frame
   int best = -1;              ///< index into candidates of the highest score_t, or −1
   bool is_loop = false;       ///< the detector declared a loop with candidates[best]
+  bool lateral = false;       ///< the detector reported candidates[best] as lateral (FrameResult::lateral)
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();  ///< the loop's pose (if is_loop)
   bool pose_evaluated = false;  ///< is_loop and within pose_max_distance: counts in the published pose table
   PoseError pose_error;         ///< the loop's pose against ground truth, at any distance (if is_loop)
@@ -81,9 +83,28 @@ struct CurveMetrics {
   int n_negative = 0;
 };
 
+/// Where the queries' top-1 candidates lie (the top-1 protocol's samples, by ground-truth distance).
+struct Top1Counts {
+  int near = 0;     ///< top-1 closer than the main positive distance (3 m): a correct revisit
+  int lateral = 0;  ///< top-1 between the positive and the negative distance (3–20 m): a neighbour, not the revisit
+  int far = 0;      ///< top-1 beyond the negative distance (20 m): a wrong place
+  int none = 0;     ///< queried frames without any candidate (no top-1)
+};
+
 struct SequenceMetrics {
   std::vector<CurveMetrics> pairwise;  ///< spec §9 pairwise protocol, one per positive distance ([0] is the main)
-  CurveMetrics top1;                   ///< one sample per query: its best candidate (Scan Context / SSC protocol)
+  /// One sample per query: its chosen candidate (FrameRecord::best) with its score_t, or score 0 if the detector
+  /// reported it as lateral (its own pose puts it ≥ verification.lateral_distance away: not claimed as the
+  /// revisit); if none passed the gates, its nearest global descriptor with score 0 (Scan Context / SSC
+  /// protocol). A top-1 at or beyond the main positive distance is a false positive; recall counts against
+  /// n_revisit_queries.
+  CurveMetrics top1;
+  /// The same with score_t for every chosen candidate, lateral or not (score alone, as peers without a pose).
+  CurveMetrics top1_score_only;
+  /// The same with the lateral top-1 samples (3–20 m) left out, as the pairwise protocol leaves out its 3–20 m
+  /// pairs; the recall denominator is still n_revisit_queries.
+  CurveMetrics top1_no_lateral;
+  Top1Counts top1_counts;              ///< the top-1 samples by distance band
   int n_frames = 0;
   int n_queries = 0;                   ///< frames that were queried
   int n_revisit_queries = 0;           ///< queried frames with a true revisit (main positive distance)
@@ -91,6 +112,8 @@ struct SequenceMetrics {
   int loops_detected = 0;
   int loops_true = 0;                  ///< detected loops whose match is within the main positive distance
   int loops_false = 0;                 ///< detected loops whose match is beyond the negative distance
+  int loops_lateral = 0;               ///< detected loops in between (3–20 m): neighbours of the revisit
+  int loops_reported_lateral = 0;      ///< detected loops the detector itself reported as lateral (FrameRecord)
   /// Detected loops whose pose meets the success bounds, at any distance: a loop between overlapping views
   /// 20 m apart is a "false" loop by the distance protocol but a correct constraint for a pose graph.
   int loops_pose_correct = 0;
