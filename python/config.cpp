@@ -124,6 +124,10 @@ void sections(py::module_& m) {
       .def_readwrite("min_inliers", &VerificationConfig::min_inliers, "accept a hypothesis with >= this many inliers")
       .def_readwrite("min_inlier_fraction", &VerificationConfig::min_inlier_fraction, "... and >= this share of |LA|")
       .def_readwrite("ransac_confidence", &VerificationConfig::ransac_confidence, "adaptive RANSAC stop probability")
+      .def_readwrite("select_margin", &VerificationConfig::select_margin,
+                     "top-1: the closest candidate scoring within this of the best")
+      .def_readwrite("lateral_distance", &VerificationConfig::lateral_distance,
+                     "a top-1 estimated this far (m) or more is lateral")
       .def_readwrite("score_formula", &VerificationConfig::score_formula, "score_t formula")
       .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score_t = score_c, pose from all pairs")
       .def_readwrite("sigma_4", &VerificationConfig::sigma_4, "σ_4: a loop iff the best score_t > σ_4")
@@ -145,6 +149,7 @@ void bindConfig(py::module_& m) {
       .def_readwrite("graph", &Config::graph, "semantic graph (graph.*)")
       .def_readwrite("descriptor", &Config::descriptor, "descriptors (descriptor.*)")
       .def_readwrite("retrieval", &Config::retrieval, "candidate retrieval (retrieval.*)")
+      .def_readwrite("registration", &Config::registration, "fine registration of loop poses (registration.*)")
       .def_readwrite("association", &Config::association, "node association (association.*)")
       .def_readwrite("verification", &Config::verification, "verification and loop decision (verification.*)")
       .def_readwrite("threads", &Config::threads, "worker threads for candidate verification")

@@ -44,6 +44,7 @@ void bindResults(py::module_& m) {
       .def_readonly("description_ms", &StageTimes::description_ms, "graph, local and global descriptors")
       .def_readonly("retrieval_ms", &StageTimes::retrieval_ms, "K-nearest-neighbour search")
       .def_readonly("verification_ms", &StageTimes::verification_ms, "association, RANSAC and pose")
+      .def_readonly("refinement_ms", &StageTimes::refinement_ms, "fine registration, its clouds included")
       .def_property_readonly("total_ms", &StageTimes::total_ms, "sum of the stages");
 
   py::class_<ExtractionStats>(m, "ExtractionStats", "What happened to a scan's points on their way to nodes.")
@@ -79,7 +80,8 @@ void bindResults(py::module_& m) {
   py::class_<Candidate>(m, "Candidate", "One retrieved candidate frame and its verification.")
       .def_readonly("frame", &Candidate::frame, "database index of the candidate")
       .def_readonly("distance2", &Candidate::distance2, "squared L2 distance of the global descriptors")
-      .def_readonly("match", &Candidate::match, "MatchResult (query -> candidate)");
+      .def_readonly("match", &Candidate::match, "MatchResult (query -> candidate)")
+      .def_readonly("refinement", &Candidate::refinement, "Refinement of the declared loop (registration.online), or None");
 
   py::class_<FrameResult>(m, "FrameResult", "What the detector found for one frame.")
       .def_readonly("frame", &FrameResult::frame, "index of this frame (0, 1, 2, ... in processing order)")
@@ -89,6 +91,7 @@ void bindResults(py::module_& m) {
       .def_readonly("candidates", &FrameResult::candidates, "retrieved candidates in ascending frame index")
       .def_readonly("best", &FrameResult::best, "index into candidates of the highest score_t, or -1")
       .def_readonly("is_loop", &FrameResult::is_loop, "candidates[best].match.score_t > σ_4")
+      .def_readonly("lateral", &FrameResult::lateral, "candidates[best] is estimated >= lateral_distance away")
       .def_readonly("timing", &FrameResult::timing, "stage times of this frame")
       .def_property_readonly("loop", &FrameResult::loop, py::return_value_policy::reference_internal,
                              "the loop-closing Candidate, or None")
@@ -108,6 +111,7 @@ void bindResults(py::module_& m) {
       .def_readonly("extraction_query", &PairResult::extraction_query, "point bookkeeping of the query scan")
       .def_readonly("extraction_match", &PairResult::extraction_match, "point bookkeeping of the match scan")
       .def_readonly("timing", &PairResult::timing, "both frames' extraction and description; verification")
+      .def_readonly("refinement", &PairResult::refinement, "Refinement (labelled scans, registration.pair), or None")
       .def_property_readonly("query_nodes", [](const PairResult& r) { return nodesToArrays(r.query_nodes); },
                              "(centres (M, 3) float64, classes (M,) int32) that NodeMatch.query indexes")
       .def_property_readonly("match_nodes", [](const PairResult& r) { return nodesToArrays(r.match_nodes); },

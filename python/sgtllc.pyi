@@ -34,6 +34,8 @@ class NodeScore(Enum):
     RATIO: int; COUNT: int
 class ScoreFormula(Enum):
     PAPER: int; LEGACY: int; OVERLAP: int
+class RefinementStatus(Enum):
+    CONVERGED: int; MAX_ITERATIONS: int; TOO_FEW_POINTS: int; DEGENERATE: int; LOW_FITNESS: int; MOVED_TOO_FAR: int
 class RobustLoss(Enum):
     NONE: int; HUBER: int; CAUCHY: int
 
@@ -96,6 +98,25 @@ class VerificationConfig:
     use_ransac: bool
     sigma_4: float
     seed: int
+    select_margin: float
+    lateral_distance: float
+class RegistrationConfig:
+    pair: bool
+    online: bool
+    voxel: float
+    max_points: int
+    match_voxel: float
+    match_max_points: int
+    normal_neighbors: int
+    max_correspondence: float
+    kernel: float
+    max_iterations: int
+    convergence: float
+    min_fitness: float
+    max_translation_change: float
+    max_rotation_change_deg: float
+    information_sigma_min: float
+    information_scale: float
 class OdometryNoise:
     translation_sigma_per_m: float
     translation_sigma_min: float
@@ -135,6 +156,7 @@ class Config:
     graph: GraphConfig
     descriptor: DescriptorConfig
     retrieval: RetrievalConfig
+    registration: RegistrationConfig
     association: AssociationConfig
     verification: VerificationConfig
     threads: int
@@ -158,6 +180,7 @@ class StageTimes:
     description_ms: float
     retrieval_ms: float
     verification_ms: float
+    refinement_ms: float
     total_ms: float
 class ExtractionStats:
     input_points: int
@@ -181,10 +204,23 @@ class MatchResult:
     T_match_query: np.ndarray  # (4, 4) float64, read-only view
     association_pairs: np.ndarray  # (K, 2) int32
     inlier_pairs: np.ndarray  # (n_in, 2) int32
+class Refinement:
+    status: RefinementStatus
+    used: bool
+    T_match_query_seed: np.ndarray  # (4, 4)
+    T_match_query: np.ndarray  # (4, 4)
+    iterations: int
+    fitness: float
+    rmse_m: float
+    query_points: int
+    match_points: int
+    information: np.ndarray  # (6, 6)
+    time_ms: float
 class Candidate:
     frame: int
     distance2: float
     match: MatchResult
+    refinement: Optional[Refinement]
 class FrameResult:
     frame: int
     num_nodes: int
@@ -193,6 +229,7 @@ class FrameResult:
     candidates: list[Candidate]
     best: int
     is_loop: bool
+    lateral: bool
     timing: StageTimes
     loop: Optional[Candidate]
     match_frame: int
@@ -205,6 +242,7 @@ class PairResult:
     extraction_query: ExtractionStats
     extraction_match: ExtractionStats
     timing: StageTimes
+    refinement: Optional[Refinement]
     query_nodes: Nodes
     match_nodes: Nodes
     score_t: float

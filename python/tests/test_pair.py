@@ -49,7 +49,25 @@ def test_compare_nodes_equals_compare_pair(pair):
     r = sgtllc.compare_pair(*pair)
     n = sgtllc.compare_nodes(*r.query_nodes, *r.match_nodes)
     assert n.score_t == r.score_t and n.is_loop == r.is_loop
-    np.testing.assert_array_equal(n.T_match_query, r.T_match_query)
+    # Node sets have no points, so no refinement: their pose is the scans' object-level SVD pose, the seed.
+    assert n.refinement is None and r.refinement is not None
+    np.testing.assert_array_equal(n.T_match_query, r.refinement.T_match_query_seed)
+
+
+def test_refinement_is_the_cli_refinement(cli, pair):
+    expected = cli_json(cli, "pair", QUERY_BIN, MATCH_BIN)["refinement"]
+    r = sgtllc.compare_pair(*pair)
+    assert r.refinement.used and r.refinement.status == sgtllc.RefinementStatus.CONVERGED
+    assert r.refinement.status.name.lower() == expected["status"] and r.refinement.iterations == expected["iterations"]
+    assert r.refinement.fitness == pytest.approx(expected["fitness"], abs=1e-12)
+    np.testing.assert_allclose(r.refinement.T_match_query_seed, np.array(expected["T_match_query_svd"]), rtol=0, atol=1e-6)
+    np.testing.assert_array_equal(r.T_match_query, r.refinement.T_match_query)
+    assert r.refinement.information.shape == (6, 6) and r.refinement.information[0, 0] > 0
+    config = sgtllc.Config()
+    config.registration.pair = False
+    svd = sgtllc.compare_pair(*pair, config=config)
+    assert svd.refinement is None
+    np.testing.assert_array_equal(svd.T_match_query, r.refinement.T_match_query_seed)
 
 
 def test_dtypes_and_layouts_give_the_same_result(pair):
