@@ -65,7 +65,7 @@ void bindMetrics(py::module_& m) {
   m.def("f1_max", &eval::f1Max, py::arg("curve"), "max 2PR / (P + R) over the curve.");
   m.def("recall_at_100_precision", &eval::recallAt100Precision, py::arg("curve"),
         "Largest recall at precision exactly 1.");
-  m.def("extended_precision", &eval::extendedPrecision, py::arg("curve"), "EP = (P_Rmin + R_P100) / 2 (spec §9).");
+  m.def("extended_precision", &eval::extendedPrecision, py::arg("curve"), "EP = (P_Rmin + R_P100) / 2 (algorithm §9).");
 
   py::class_<eval::PoseError>(m, "PoseError", "Relative pose error of an estimate against the ground truth.")
       .def(py::init([](double t, double r) { return eval::PoseError{t, r}; }), py::arg("translation_m") = 0.0,

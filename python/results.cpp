@@ -60,7 +60,7 @@ void bindResults(py::module_& m) {
   py::class_<NodeMatch>(m, "NodeMatch", "One association: query node index, match node index, similarity S.")
       .def_readonly("query", &NodeMatch::query, "index into the query nodes")
       .def_readonly("match", &NodeMatch::match, "index into the match nodes")
-      .def_readonly("similarity", &NodeMatch::similarity, "node similarity S (spec §6)")
+      .def_readonly("similarity", &NodeMatch::similarity, "node similarity S (algorithm §6)")
       .def("__repr__", [](const NodeMatch& a) {
         return "NodeMatch(query=" + std::to_string(a.query) + ", match=" + std::to_string(a.match) + ")";
       });

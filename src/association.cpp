@@ -19,13 +19,13 @@ double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match
     if (config.entries & (1u << v)) keep[storedIndex(v, descriptor.order)] = 1.0f;
   }
   const bool all = config.entries == 0b111;
-  // The |Δa_j| test is in m² and belongs to dot-product slots (spec §6).
+  // The |Δa_j| test is in m² and belongs to dot-product slots (algorithm §6).
   const bool delta_test = descriptor.kind == SubVectorKind::kDotProducts && (config.entries & 0b010);
   const int vj = vjEntry(descriptor.order);
   const float sigma_1 = static_cast<float>(config.sigma_1);
   const float max_delta = static_cast<float>(config.max_delta_aj);
   int matches = 0;
-  // Both slots must hold a triangle (spec §6 [CHOICE]); the code also matched empty candidate slots via NaN.
+  // Both slots must hold a triangle (algorithm §6 [CHOICE]); the code also matched empty candidate slots via NaN.
   const Eigen::Vector3f* query_slots = query.slots.data();
   const Eigen::Vector3f* match_slots = match.slots.data();
   for (int w = 0; w < words; ++w) {
@@ -52,7 +52,7 @@ std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const Describ
     for (int j = 0; j < match.numNodes(); ++j) {
       if (match.graph.nodes[j].label != label) continue;
       const double s = nodeSimilarity(query.local[i], match.local[j], config, descriptor);
-      if (s > best_score) {  // strict, starting from 0: ties keep the lowest j (spec §6)
+      if (s > best_score) {  // strict, starting from 0: ties keep the lowest j (algorithm §6)
         best_score = s;
         best = j;
       }

@@ -26,7 +26,7 @@ Eigen::Vector3d triangleTerms(const Eigen::Vector3d& pi, const Eigen::Vector3d& 
 
 Eigen::Vector3d vertexEntries(const Eigen::Vector3d& t, SubVectorKind kind) {
   if (kind == SubVectorKind::kDotProducts) return t;
-  // Squared sides from the dot products: |ij|² = a_i + a_j, |ik|² = a_i + a_k, |jk|² = a_j + a_k (spec §4).
+  // Squared sides from the dot products: |ij|² = a_i + a_j, |ik|² = a_i + a_k, |jk|² = a_j + a_k (algorithm §4).
   const double ij = std::sqrt(std::max(0.0, t[0] + t[1]));
   const double ik = std::sqrt(std::max(0.0, t[0] + t[2]));
   const double jk = std::sqrt(std::max(0.0, t[1] + t[2]));
@@ -51,7 +51,7 @@ std::vector<LocalDescriptor> computeLocalDescriptors(const SemanticGraph& graph,
     for (int a = 0; a < num_slots; ++a) {
       const TwoStepPath& path = paths[a];
       // A k = i winner (only with graph.allow_k_equals_i) blocks the slot but is degenerate (a_i = a_k = 0): the
-      // authors' code never enables it on the query side (spec §3, §4), so it stays empty here.
+      // authors' code never enables it on the query side (algorithm §3, §4), so it stays empty here.
       if (!path.exists() || path.k == i) continue;
       const Eigen::Vector3d e = vertexEntries(
           triangleTerms(graph.nodes[i].centre, graph.nodes[path.j].centre, graph.nodes[path.k].centre), config.kind);

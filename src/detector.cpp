@@ -78,7 +78,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   result.num_nodes = query.numNodes();
   result.timing.description_ms = msSince(start);
 
-  // Query q sees frames 0 … q − G only (spec §5 [CHOICE]), and none before the warm-up.
+  // Query q sees frames 0 … q − G only (algorithm §5 [CHOICE]), and none before the warm-up.
   start = Clock::now();
   const RetrievalConfig& rc = config_.retrieval;
   std::vector<RetrievedFrame> retrieved;
@@ -91,7 +91,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   }
   result.timing.retrieval_ms = msSince(start);
 
-  // Candidates are verified in ascending frame index (spec §5); each writes only its own slot.
+  // Candidates are verified in ascending frame index (algorithm §5); each writes only its own slot.
   start = Clock::now();
   std::sort(retrieved.begin(), retrieved.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
   result.candidates.resize(retrieved.size());

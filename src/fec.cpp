@@ -116,7 +116,7 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   const float r2 = static_cast<float>(radius * radius);
   const size_t cap = static_cast<size_t>(max_neighbors);
 
-  // Dense neighbourhoods: classes clustered without downsampling (trunk, pole, sign; spec §2) can put thousands of
+  // Dense neighbourhoods: classes clustered without downsampling (trunk, pole, sign; algorithm §2) can put thousands of
   // points within r of a seed, and every seed would scan them all to keep its nearest max_neighbors. There a finer
   // grid is searched ring by ring around the seed, and the search stops once the max_neighbors-th nearest point
   // found is closer than any point outside the rings searched can be. The kept set, and so the clusters, are
@@ -138,7 +138,7 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   size_t candidates = 0;
   bool have_cells = false;
   for (uint32_t seed = 0; seed < n; ++seed) {
-    if (reached[seed]) continue;  // only points no earlier seed reached become seeds (spec §2)
+    if (reached[seed]) continue;  // only points no earlier seed reached become seeds (algorithm §2)
     const Eigen::Vector3f& p = points[seed];
     near.clear();
     const auto consider = [&](uint32_t q, const Eigen::Vector3f& point) {

@@ -8,7 +8,7 @@
 namespace sgtllc {
 namespace {
 
-int fuzzyGroup(int m) { return m <= kVegetation ? 0 : 1; }  // spec §5 [CHOICE]: background first
+int fuzzyGroup(int m) { return m <= kVegetation ? 0 : 1; }  // algorithm §5 [CHOICE]: background first
 
 /// 1 − cos θ_k from the vertex-rooted products, or a negative value for a degenerate triangle.
 double oneMinusCosAtK(const Eigen::Vector3d& t) {

@@ -13,7 +13,7 @@ struct FarthestTwo {
   int second = -1;
 };
 
-/// T_i[m][n] for every node i from the two farthest neighbours of each node and class (spec §3). kClasses is the
+/// T_i[m][n] for every node i from the two farthest neighbours of each node and class (algorithm §3). kClasses is the
 /// class count when fixed at compile time, 0 to use @p num_classes.
 template <int kClasses>
 void longestPaths(SemanticGraph& g, const SlotRows<FarthestTwo>& far, bool allow_k_equals_i, int num_classes) {
@@ -88,7 +88,7 @@ SemanticGraph buildGraph(std::vector<Node> nodes, const GraphConfig& config, int
     for (int q = p + 1; q < n; ++q) {
       const double d = (g.nodes[p].centre - g.nodes[q].centre).norm();
       g.distance(p, q) = g.distance(q, p) = d;
-      if (d < config.sigma_d) {  // strict, as the authors' getNeighbor (spec §3)
+      if (d < config.sigma_d) {  // strict, as the authors' getNeighbor (algorithm §3)
         g.adjacency[static_cast<size_t>(p) * n + q] = g.adjacency[static_cast<size_t>(q) * n + p] = 1;
         g.isolated[p] = g.isolated[q] = 0;
       }

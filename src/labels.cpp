@@ -12,7 +12,7 @@ constexpr size_t kTableSize = 1u << 16;
 constexpr uint16_t kSemanticKittiRawIds[] = {0,  1,  10, 11, 13, 15, 16, 18, 20,  30,  31,  32,  40,  44,  48,  49, 50,
                                              51, 52, 60, 70, 71, 72, 80, 81, 99, 252, 253, 254, 255, 256, 257, 258, 259};
 
-// MCD (Livox Mid-70) id → class, from the authors' 29-entry map (spec §8). Ids 0..28 are the label space.
+// MCD (Livox Mid-70) id → class, from the authors' 29-entry map (algorithm §8). Ids 0..28 are the label space.
 constexpr std::pair<uint16_t, int> kMcdMap[] = {
     {2, kBuilding}, {17, kBuilding},                                                           //
     {5, kFence},    {7, kFence},     {19, kFence}, {23, kFence}, {28, kFence},                 //
@@ -38,12 +38,12 @@ LabelMap::LabelMap(const LabelConfig& config) : table_(kTableSize, kDropped), kn
       break;
     }
     case LabelPreset::kSemanticKittiLearning:
-      // Train ids 0..19; classes are train ids 13..19 (spec §1).
+      // Train ids 0..19; classes are train ids 13..19 (algorithm §1).
       know_range(0, 19);
       for (int c = 0; c < kNumPaperClasses; ++c) set(13 + c, c);
       break;
     case LabelPreset::kMulRan:
-      // Train id = label + 1, so classes are labels 12..18; train ids > 19 (e.g. label 255) are dropped (spec §8).
+      // Train id = label + 1, so classes are labels 12..18; train ids > 19 (e.g. label 255) are dropped (algorithm §8).
       know_range(0, 255);
       for (int c = 0; c < kNumPaperClasses; ++c) set(12 + c, c);
       break;

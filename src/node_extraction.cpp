@@ -25,8 +25,8 @@ std::vector<Cluster> clusterCentres(const std::vector<Eigen::Vector3f>& points,
   std::vector<Cluster> centres;
   if (points.empty()) return centres;
   if (params.voxel > 0.0) {
-    // Minimum sizes count voxels (spec §2); the centre is the mean of the original points by default, which an
-    // axis-aligned grid cannot move under rotation (spec §11), or of the voxel centroids as in the authors' code.
+    // Minimum sizes count voxels (algorithm §2); the centre is the mean of the original points by default, which an
+    // axis-aligned grid cannot move under rotation (algorithm §11), or of the voxel centroids as in the authors' code.
     const VoxelizedCloud voxels = voxelDownsample(points, params.voxel);
     const auto clusters =
         fastEuclideanClustering(voxels.centroids, params.radius, config.max_neighbors, params.min_size);
@@ -121,7 +121,7 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
     if (cls[i] != kDropped) by_class[cls[i]].push_back(cloud.points[i]);
   }
 
-  // Classes are clustered independently (spec §2), so they run in parallel, the largest first; each writes only its
+  // Classes are clustered independently (algorithm §2), so they run in parallel, the largest first; each writes only its
   // own slot and the merge below is in class order, so the nodes never depend on the thread count.
   std::vector<std::vector<Cluster>> clusters(static_cast<size_t>(num_classes_));
   std::vector<int> order(static_cast<size_t>(num_classes_));
@@ -147,7 +147,7 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
     const size_t first_of_class = result.nodes.size();
     for (const Cluster& cluster : clusters[c]) {
       const Eigen::Vector3d& centre = cluster.centre;
-      // Same-class duplicate suppression against the centres accepted so far (spec §2).
+      // Same-class duplicate suppression against the centres accepted so far (algorithm §2).
       bool duplicate = false;
       for (size_t k = first_of_class; k < result.nodes.size() && !duplicate; ++k) {
         duplicate = (result.nodes[k].centre - centre).squaredNorm() < dup2;

@@ -37,7 +37,7 @@ void drawSample(std::mt19937& rng, int n, const RansacParams& params, std::vecto
 
 /// Kabsch on the pairs listed in @p idx (repeats allowed): centre both sets, H = Σ s̃ t̃ᵀ = UΣVᵀ,
 /// R = V·diag(1, 1, det(VUᵀ))·Uᵀ, t = μ_t − R μ_s. The det-sign correction keeps R a rotation, which the authors'
-/// code omits (spec §7.2). Fixed-size and allocation-free: RANSAC calls it 500 times per candidate, where
+/// code omits (algorithm §7.2). Fixed-size and allocation-free: RANSAC calls it 500 times per candidate, where
 /// Eigen::umeyama's dynamic-size path measured about three times slower.
 Eigen::Matrix4d kabsch(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
                        const std::vector<int>& idx) {

@@ -42,7 +42,7 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
     return result;
   }
 
-  // Source = query node centres, target = match node centres, so the pose maps query into match (spec §7.5).
+  // Source = query node centres, target = match node centres, so the pose maps query into match (algorithm §7.5).
   std::vector<Eigen::Vector3d> source, target;
   for (const NodeMatch& m : result.associations) {
     source.push_back(query.graph.nodes[m.query].centre);

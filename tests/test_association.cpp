@@ -1,4 +1,4 @@
-// Node association (spec §6): node similarity and the association of hand-built descriptors.
+// Node association (algorithm §6): node similarity and the association of hand-built descriptors.
 #include <algorithm>
 #include <tuple>
 

@@ -1,4 +1,4 @@
-// FrameDatabase (spec §5, §10): exact K-nearest-neighbour retrieval against a brute-force reference, for both
+// FrameDatabase (algorithm §5, §10): exact K-nearest-neighbour retrieval against a brute-force reference, for both
 // search methods, with ties (duplicate descriptors) going to the lower frame index.
 #include <algorithm>
 #include <random>

@@ -1,4 +1,4 @@
-// Local descriptors (spec §4) and global descriptors (§5): hand-computed slot values and cells, brute-force pooling
+// Local descriptors (algorithm §4) and global descriptors (§5): hand-computed slot values and cells, brute-force pooling
 // references on random node sets, and rigid-motion invariance on a real KITTI scan.
 #include <algorithm>
 #include <cmath>
@@ -51,7 +51,7 @@ Eigen::Isometry3d randomRigid(std::mt19937& rng, double max_tilt_deg, double max
 
 // --- Brute-force references ----------------------------------------------------------------------------------------
 
-/// Des^G from spec §5 / global_descriptor.h with the reference paths, in double. G1 pools a_k (the paper's
+/// Des^G from algorithm §5 / global_descriptor.h with the reference paths, in double. G1 pools a_k (the paper's
 /// Des[α][2] in its own order) whatever the storage order.
 std::vector<double> bruteGlobal(const std::vector<Node>& nodes, const RefGraph& g, GlobalMode mode,
                                 SubVectorOrder order) {
@@ -156,7 +156,7 @@ TEST(Descriptor, KEqualsISlot) {
   const auto g = sgtllc::buildGraph(handNodes(), allow);
   const auto des = sgtllc::computeLocalDescriptors(g, {});
   // 0→1→0 wins node 0's (fence, building) slot, but the degenerate triangle (a_i = a_k = 0) leaves it empty, as
-  // the authors' code never enables it (spec §3, §4); the same for 0→2→0.
+  // the authors' code never enables it (algorithm §3, §4); the same for 0→2→0.
   EXPECT_EQ(g.paths[0][slot(1, 0)].j, 1);
   EXPECT_EQ(g.paths[0][slot(1, 0)].k, 0);
   EXPECT_FALSE(des[0].isValid(slot(1, 0)));
@@ -275,7 +275,7 @@ TEST(Invariance, NodeLevelRigidMotion) {
 TEST(Invariance, PointLevelRigidMotion) {
   // Moving the points and re-extracting: trunk, pole and sign clusters (not downsampled) come back exactly; the
   // voxelised classes see a rotated voxel grid, so a cluster may gain or lose voxels or cross its minimum size
-  // (spec §11). So: most nodes must have a counterpart within 2 cm, and the descriptors of the graph made of the
+  // (algorithm §11). So: most nodes must have a counterpart within 2 cm, and the descriptors of the graph made of the
   // nodes that came back exactly (< 10 µm: float rounding only) must be unchanged.
   const sgtllc::LabeledCloud scan = loadScan52();
   const sgtllc::NodeExtractor extractor({}, {});

@@ -54,7 +54,7 @@ TEST_F(KittiPairs, RevisitIsALoopWithAccuratePose) {
   const auto err = poseError(r.match.T_match_query, test::referencePose4501To52());
   EXPECT_LT(err.translation_m, 0.15);
   EXPECT_LT(err.rotation_deg, 1.0);
-  // Object-level SVD on ground-truth labels reaches a few centimetres here (spec §11: 2.2 cm).
+  // Object-level SVD on ground-truth labels reaches a few centimetres here (algorithm §11: 2.2 cm).
   EXPECT_LT(err.translation_m, 0.05);
 }
 
@@ -81,7 +81,7 @@ TEST_F(KittiPairs, RevisitSurvivesDroppingAFifthOfThePoints) {
 
 TEST_F(KittiPairs, RigidCopyGivesBackItsTransform) {
   // Large yaw, a few degrees of tilt, metres of shift. Node centres are means of each cluster's original points,
-  // so the axis-aligned voxel grid does not move them (spec §11).
+  // so the axis-aligned voxel grid does not move them (algorithm §11).
   const Eigen::Matrix4d T = test::rigid(137.0, 3.0, -2.0, Eigen::Vector3d(12.5, -7.25, 1.5));
   for (const LabeledCloud* scan : {s52, s88}) {
     const PairResult r = comparePair(test::transformed(*scan, T), *scan);

@@ -1,4 +1,4 @@
-// Evaluation metrics against hand-computed PR tables (spec §9), including the edge cases, pose errors and
+// Evaluation metrics against hand-computed PR tables (algorithm §9), including the edge cases, pose errors and
 // pair-list parsing.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

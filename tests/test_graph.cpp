@@ -1,4 +1,4 @@
-// Graph (spec §3): hand-computed adjacency, paths and ties, and brute-force path references on random node sets
+// Graph (algorithm §3): hand-computed adjacency, paths and ties, and brute-force path references on random node sets
 // (local descriptors checked along the reference paths).
 #include <string>
 #include <utility>

@@ -1,5 +1,5 @@
 // Shared by the graph and descriptor suites (test_graph.cpp, test_descriptor.cpp): node builders, a hand-made node
-// set and an O(N³) brute-force graph straight from spec §3.
+// set and an O(N³) brute-force graph straight from algorithm §3.
 #pragma once
 
 #include <array>
@@ -49,7 +49,7 @@ struct RefGraph {
 
 inline double dist(const std::vector<Node>& nodes, int a, int b) { return (nodes[a].centre - nodes[b].centre).norm(); }
 
-/// O(N³) path search straight from spec §3: lowest j, then lowest k, wins a tie (strict >).
+/// O(N³) path search straight from algorithm §3: lowest j, then lowest k, wins a tie (strict >).
 inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool allow_k_equals_i,
                            int num_classes = kNumPaperClasses) {
   const int n = static_cast<int>(nodes.size());
@@ -86,7 +86,7 @@ inline RefGraph bruteGraph(const std::vector<Node>& nodes, double sigma_d, bool 
   return g;
 }
 
-/// (a_i, a_j, a_k) written out from the definition (spec §4).
+/// (a_i, a_j, a_k) written out from the definition (algorithm §4).
 inline Eigen::Vector3d terms(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& pk) {
   return {(pj - pi).dot(pk - pi), (pi - pj).dot(pk - pj), (pi - pk).dot(pj - pk)};
 }

@@ -1,5 +1,5 @@
-// Label presets (spec §1, §8): every preset is checked exhaustively over all 2^16 ids against a table written out
-// here from the spec, plus the SemanticKITTI instance bits in the high half of the word.
+// Label presets (algorithm §1, §8): every preset is checked exhaustively over all 2^16 ids against a table written out
+// here from docs/algorithm.md §1, plus the SemanticKITTI instance bits in the high half of the word.
 #include <cstdint>
 #include <map>
 #include <set>
@@ -43,7 +43,7 @@ std::set<uint32_t> range(uint32_t first, uint32_t last) {
   return s;
 }
 
-// SemanticKITTI raw label space (semantic-kitti.yaml `labels`), spec §1 "Dropped labels".
+// SemanticKITTI raw label space (semantic-kitti.yaml `labels`), algorithm §1 "Dropped labels".
 const std::set<uint32_t> kKittiRawIds = {0,  1,  10, 11, 13, 15, 16, 18, 20,  30,  31,  32,  40,  44,  48,  49, 50,
                                          51, 52, 60, 70, 71, 72, 80, 81, 99, 252, 253, 254, 255, 256, 257, 258, 259};
 
@@ -107,7 +107,7 @@ TEST(Labels, MulRanSpotChecks) {
   EXPECT_EQ(map.classOf(18), sgtllc::kTrafficSign);
   EXPECT_EQ(map.classOf(11), kDropped);
   EXPECT_EQ(map.classOf(19), kDropped);   // train id 20 > 19
-  EXPECT_EQ(map.classOf(255), kDropped);  // spec §8: 255 is dropped
+  EXPECT_EQ(map.classOf(255), kDropped);  // algorithm §8: 255 is dropped
   EXPECT_FALSE(map.isKnown(12345));
 }
 

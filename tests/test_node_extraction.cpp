@@ -1,4 +1,4 @@
-// Node extraction (spec §1–§2): class filtering, per-class minimum sizes, node centres and order, same-class
+// Node extraction (algorithm §1–§2): class filtering, per-class minimum sizes, node centres and order, same-class
 // duplicate suppression and bookkeeping, on synthetic labelled clouds.
 #include <algorithm>
 #include <cmath>

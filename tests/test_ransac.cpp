@@ -1,4 +1,4 @@
-// Rigid fitting and RANSAC (spec §7.2, §7.5): closed-form fits against known transforms and exhaustive
+// Rigid fitting and RANSAC (algorithm §7.2, §7.5): closed-form fits against known transforms and exhaustive
 // references, RANSAC at known outlier ratios.
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Frame verification (spec §7.1–§7.5): gates, RANSAC, loop score and pose on real KITTI nodes.
+// Frame verification (algorithm §7.1–§7.5): gates, RANSAC, loop score and pose on real KITTI nodes.
 #include <cmath>
 #include <string>
 
@@ -141,7 +141,7 @@ TEST(MatchFramesReal, LoopAndNonLoopPairs) {
   const auto loop = sgtllc::matchFrames(describe(scanNodes("004501")), describe(scanNodes("000052")), cfg);
   ASSERT_EQ(loop.rejection, sgtllc::Rejection::kNone);
   EXPECT_TRUE(sgtllc::isLoop(loop, cfg.verification));
-  // The KITTI ground truth itself is decimetres off here (mostly in z); spec §11 gets 2 cm against ICP-refined poses.
+  // The KITTI ground truth itself is decimetres off here (mostly in z); algorithm §11 gets 2 cm against ICP-refined poses.
   EXPECT_LT((loop.T_match_query.topRightCorner<3, 1>() - T_gt.topRightCorner<3, 1>()).norm(), 0.5);
   EXPECT_LT(rotationErrorDeg(loop.T_match_query, T_gt), 1.0);
   const auto far = sgtllc::matchFrames(describe(scanNodes("000850")), describe(scanNodes("000088")), cfg);

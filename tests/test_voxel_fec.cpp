@@ -1,4 +1,4 @@
-// Voxel downsampling and FEC (spec §1–§2), against brute-force references on synthetic clouds.
+// Voxel downsampling and FEC (algorithm §1–§2), against brute-force references on synthetic clouds.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -59,7 +59,7 @@ Clusters connectedComponents(const Cloud& pts, double r, int min_size) {
   return groups(uf, min_size);
 }
 
-/// FEC transliterated from spec §2: points in index order; an unreached point is a seed; its neighbours are the cap
+/// FEC transliterated from algorithm §2: points in index order; an unreached point is a seed; its neighbours are the cap
 /// nearest points within r (itself included, ties to the lower index); the seed joins each, and they are reached.
 Clusters fecReference(const Cloud& pts, double r, int cap, int min_size) {
   const float r2 = static_cast<float>(r * r);

@@ -1,5 +1,5 @@
 /// @file association.h
-/// @brief Node association between two frames by counting similar sub-vectors (spec §6, paper Algorithm 1).
+/// @brief Node association between two frames by counting similar sub-vectors (algorithm §6, paper Algorithm 1).
 #pragma once
 
 #include <vector>
@@ -16,7 +16,7 @@ struct NodeMatch {
   double similarity = 0.0;
 };
 
-/// Similarity S[i][j] of query node i and match node j (spec §6): over the slots valid in the query, the share
+/// Similarity S[i][j] of query node i and match node j (algorithm §6): over the slots valid in the query, the share
 /// (or, with NodeScore::kCount, the number) whose sub-vectors are valid in both with cos > σ_1 over the kept
 /// entries (AssociationConfig::entries) and, for dot-product slots, |Δa_j| below max_delta_aj. Returns 0 if
 /// node i has no valid slot.

@@ -1,5 +1,5 @@
 /// @file clustering.h
-/// @brief Voxel downsampling and Fast Euclidean Clustering (FEC), the building blocks of node extraction (spec §2).
+/// @brief Voxel downsampling and Fast Euclidean Clustering (FEC), the building blocks of node extraction (algorithm §2).
 #pragma once
 
 #include <cstdint>
@@ -20,7 +20,7 @@ struct VoxelizedCloud {
 /// their first point appears so the output never depends on hashing. O(n).
 VoxelizedCloud voxelDownsample(const std::vector<Eigen::Vector3f>& points, double leaf);
 
-/// Fast Euclidean Clustering (spec §2, authors' FEC.h): points are visited in index order; a point not yet reached
+/// Fast Euclidean Clustering (algorithm §2, authors' FEC.h): points are visited in index order; a point not yet reached
 /// becomes a seed and joins, with every cluster they belong to, its (at most @p max_neighbors nearest) neighbours
 /// within @p radius, itself included. Equivalent to union-find over the (seed, neighbour) edges; O(n) expected with
 /// a hash grid of cell @p radius.

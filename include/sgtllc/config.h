@@ -1,7 +1,7 @@
 /// @file config.h
-/// @brief The one configuration aggregate. Every field has a default, units and the paper symbol or spec section.
+/// @brief The one configuration aggregate. Every field has a default, units and the paper symbol or algorithm section (docs/algorithm.md).
 ///
-/// Defaults are the spec's [CHOICE] values for KITTI (spec §1–§8). YAML keys mirror the field names one to one
+/// Defaults are the project's choices for KITTI (algorithm §1–§8). YAML keys mirror the field names one to one
 /// (`cluster.building.min_size`, `verification.sigma_4`, …); `sgtllc config` prints them.
 ///
 /// Every numeric field has an allowed range, given in brackets in its comment ("[0, 1]"; a parenthesis marks an
@@ -23,7 +23,7 @@
 
 namespace sgtllc {
 
-/// How raw per-point ids map to the stable classes (spec §1, §8).
+/// How raw per-point ids map to the stable classes (algorithm §1, §8).
 enum class LabelPreset {
   kSemanticKittiRaw,       ///< SemanticKITTI raw ids (50 building … 81 traffic-sign); low 16 bits of the .label word
   kSemanticKittiLearning,  ///< SemanticKITTI learning ("train") ids 13..19
@@ -47,7 +47,7 @@ struct ExtraClass {
 };
 
 struct LabelConfig {
-  LabelPreset preset = LabelPreset::kSemanticKittiRaw;  ///< id convention of the input labels (spec §1, §8)
+  LabelPreset preset = LabelPreset::kSemanticKittiRaw;  ///< id convention of the input labels (algorithm §1, §8)
   /// Raw id → stable class index (0..C−1) or −1 (known, dropped). Used when preset is kCustom; ids not listed are
   /// unknown.
   std::map<uint32_t, int> custom_map;
@@ -63,13 +63,13 @@ struct LabelConfig {
   std::string className(int c) const;
 };
 
-/// Where a node's centre comes from (spec §2 and §11).
+/// Where a node's centre comes from (algorithm §2 and §11).
 enum class CentreSource {
-  kPoints,  ///< mean of the cluster's original points: invariant to the axis-aligned voxel grid (spec §11) [default]
+  kPoints,  ///< mean of the cluster's original points: invariant to the axis-aligned voxel grid (algorithm §11) [default]
   kVoxels,  ///< mean of the cluster's voxel centroids, as the authors' code (pcl::compute3DCentroid on voxels)
 };
 
-/// Per-class clustering parameters (spec §2 table).
+/// Per-class clustering parameters (algorithm §2 table).
 struct ClassClusterConfig {
   /// Voxel leaf (m); 0 = no downsampling. 0 or [0.001, 10]: the lower bound keeps the cells of points within
   /// ±kMaxCoordinate exact integers.
@@ -90,36 +90,36 @@ struct ClusterConfig {
       {0.0, 1.0, 20},   // pole
       {0.0, 1.0, 20},   // traffic-sign
   };
-  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (spec §2) [1, 10000]
-  /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (spec §2) [0, 100].
+  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (algorithm §2) [1, 10000]
+  /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (algorithm §2) [0, 100].
   double duplicate_radius = 1.0;
-  CentreSource centre = CentreSource::kPoints;  ///< node centre source (spec §11 [CHOICE])
+  CentreSource centre = CentreSource::kPoints;  ///< node centre source (algorithm §11 [CHOICE])
 };
 
 /// Upper bound of GraphConfig::max_nodes: a graph of this size takes ~36 MB and a pair of them about a second.
 inline constexpr int kMaxGraphNodes = 2000;
 
 struct GraphConfig {
-  /// σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (spec §3) (0, 1000].
+  /// σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (algorithm §3) (0, 1000].
   double sigma_d = 30.0;
   /// Most nodes one frame's graph may have [1, kMaxGraphNodes = 2000]. The graph is dense: its memory and the
   /// association time grow with the square of the node count (1,000 nodes: 9 MB per graph). Real scans give
-  /// 20–70 nodes (spec §2), so the default leaves 14× headroom. A scan with more clusters keeps the max_nodes
+  /// 20–70 nodes (algorithm §2), so the default leaves 14× headroom. A scan with more clusters keeps the max_nodes
   /// with the most points (NodeExtractor; counted in ExtractionStats::capped_nodes); ready-made nodes above it
   /// (node files, LoopDetector::process(nodes), comparePair) are an error.
   int max_nodes = 1000;
   /// Let the path i→j→i compete for a slot, as the authors' code; such a winner leaves the slot empty
-  /// (spec §3 [CHOICE]).
+  /// (algorithm §3 [CHOICE]).
   bool allow_k_equals_i = false;
 };
 
-/// Order of the three sub-vector entries of a local-descriptor slot (spec §4).
+/// Order of the three sub-vector entries of a local-descriptor slot (algorithm §4).
 enum class SubVectorOrder {
   kPaper,  ///< (a_i, a_j, a_k), vertex-rooted [default]
   kCode,   ///< (a_i, a_k, −a_j), the authors' code
 };
 
-/// Global descriptor variants (spec §5).
+/// Global descriptor variants (algorithm §5).
 enum class GlobalMode {
   kG1,  ///< paper: 98-D fuzzy pooling of max a_k (floored at 0)
   kG2,  ///< code: 343-D, max 1 − cos θ_k
@@ -134,23 +134,23 @@ enum class SubVectorKind {
 };
 
 struct DescriptorConfig {
-  SubVectorKind kind = SubVectorKind::kDotProducts;  ///< slot entries (spec §4; others for ablation)
-  SubVectorOrder order = SubVectorOrder::kPaper;  ///< sub-vector entry order (spec §4 [CHOICE])
-  /// Global descriptor Des^G (spec §5). [deviation: the spec's [CHOICE] is G3; G2 has the highest retrieval
+  SubVectorKind kind = SubVectorKind::kDotProducts;  ///< slot entries (algorithm §4; others for ablation)
+  SubVectorOrder order = SubVectorOrder::kPaper;  ///< sub-vector entry order (algorithm §4 [CHOICE])
+  /// Global descriptor Des^G (algorithm §5). [deviation: the first choice was G3; G2 has the highest retrieval
   /// recall@15 on all five simulated 2,000-frame sequences measured in BENCHMARKS.md ("Global descriptor")]
   GlobalMode global_mode = GlobalMode::kG2;
 };
 
 /// Nearest-neighbour search over global descriptors.
 enum class RetrievalMethod {
-  kBruteForce,  ///< exact linear scan (spec §5 [CHOICE]) [default]
+  kBruteForce,  ///< exact linear scan (algorithm §5 [CHOICE]) [default]
   kKdTree,      ///< exact kd-tree search (nanoflann); frames at equal distance up to float rounding may swap
 };
 
 /// What a frame is stored and searched by.
 enum class RetrievalKey {
   /// Per class-pair histogram of node-centre distances (retrieval/distance_histogram.h) [default]. [deviation: the
-  /// spec's key is Des^G (§5); the max-pooled Des^G changes by a whole cell when one node appears or vanishes,
+  /// paper's key is Des^G (algorithm §5); the max-pooled Des^G changes by a whole cell when one node appears or vanishes,
   /// and missed 11 % of urban7's revisits among its 15 candidates (recall@15 0.888 → 0.985 with the histogram,
   /// BENCHMARKS.md "Retrieval key")]
   kDistanceHistogram,
@@ -164,8 +164,8 @@ struct RetrievalConfig {
   int histogram_bins = 10;
   /// Distances (m) the histogram covers; node pairs this far apart or farther do not vote (0, 1000].
   double histogram_range = 20.0;
-  int num_candidates = 15;   ///< K: candidates retrieved per query (spec §5) [1, 1000]
-  /// G: query q searches only frames with index ≤ q − G (spec §5 [CHOICE]) [1, 1000000]. A sequence of at most G
+  int num_candidates = 15;   ///< K: candidates retrieved per query (algorithm §5) [1, 1000]
+  /// G: query q searches only frames with index ≤ q − G (algorithm §5 [CHOICE]) [1, 1000000]. A sequence of at most G
   /// frames has no candidates at all (LoopDetector::firstSearchedFrame).
   int exclude_recent = 50;
   /// No query before this many frames are in the database (authors' code: 150) [0, 1000000].
@@ -173,25 +173,25 @@ struct RetrievalConfig {
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
 };
 
-/// How the node similarity S[i][j] is formed (spec §6).
+/// How the node similarity S[i][j] is formed (algorithm §6).
 enum class NodeScore {
   kRatio,  ///< matched slots / valid query slots, as the authors' code [default]
   kCount,  ///< raw count of matched slots, as the paper's Algorithm 1
 };
 
 struct AssociationConfig {
-  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (spec §6) [-1, 1]
-  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (spec §6) (0, 1000000]
-  /// σ_2: accept the best candidate node iff S ≥ σ_2 (spec §6). [0, 1] with score ratio; [0, C²] (the slot
+  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (algorithm §6) [-1, 1]
+  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (algorithm §6) (0, 1000000]
+  /// σ_2: accept the best candidate node iff S ≥ σ_2 (algorithm §6). [0, 1] with score ratio; [0, C²] (the slot
   /// count: 49 for the seven classes) with score count.
   double sigma_2 = 0.3;
-  NodeScore score = NodeScore::kRatio;  ///< node similarity form (spec §6)
+  NodeScore score = NodeScore::kRatio;  ///< node similarity form (algorithm §6)
   /// Sub-vector entries compared, by vertex: bit 0 = v_i, bit 1 = v_j, bit 2 = v_k (ablation: drop one). The
   /// |Δa_j| test applies only to dot-product slots with the v_j entry kept.
   unsigned entries = 0b111;
 };
 
-/// Formula of the loop score score_t (spec §7.3).
+/// Formula of the loop score score_t (algorithm §7.3).
 enum class ScoreFormula {
   kPaper,    ///< n_in / |LA|, as the paper
   kLegacy,   ///< (n_in − 1) / |LA|, as the authors' code
@@ -199,28 +199,28 @@ enum class ScoreFormula {
 };
 
 struct VerificationConfig {
-  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (spec §7.1) [0, 1]. [deviation: the paper's 0.35 (and
+  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: the paper's 0.35 (and
   /// |LA| ≥ 7 below) gave score 0 to 4.6 % of the true loops of the simulator's pair lists, most of them in
   /// small graphs (suburban scenes, occlusion); the overlap score_t already divides by the larger graph's size,
   /// so the gates only dropped true loops. Default 0, |LA| ≥ 3 and 3 RANSAC inliers (the fewest a rigid fit
   /// needs): pair-list F1max 0.970 → 0.991 (urban11), 0.969 → 0.992 (sub7), no false loop added, see
   /// BENCHMARKS.md ("Verification gates"). The paper's values: sigma_3 0.35, min_associations 7, min_inliers 5]
   double sigma_3 = 0.0;
-  int min_associations = 3;       ///< ... or if |LA| is below this (spec §7.1) [1, kMaxGraphNodes]
-  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (spec §7.2) [1, 10000]
-  int ransac_sample_size = 7;     ///< node pairs drawn per hypothesis (spec §7.2) [3, 100]
-  bool sample_with_replacement = true;  ///< draw with replacement, as the authors' code (spec §7.2)
-  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (spec §7.2) (0, 10]
-  /// A hypothesis is accepted only with at least this many inliers (spec §7.2) [1, kMaxGraphNodes]. [deviation:
+  int min_associations = 3;       ///< ... or if |LA| is below this (algorithm §7.1) [1, kMaxGraphNodes]
+  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (algorithm §7.2) [1, 10000]
+  int ransac_sample_size = 7;     ///< node pairs drawn per hypothesis (algorithm §7.2) [3, 100]
+  bool sample_with_replacement = true;  ///< draw with replacement, as the authors' code (algorithm §7.2)
+  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (algorithm §7.2) (0, 10]
+  /// A hypothesis is accepted only with at least this many inliers (algorithm §7.2) [1, kMaxGraphNodes]. [deviation:
   /// the authors' 5; see sigma_3]
   int min_inliers = 3;
-  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (spec §7.2) [0, 1]
+  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (algorithm §7.2) [0, 1]
   /// Adaptive RANSAC: stop once an all-inlier sample of the best hypothesis has been drawn with this probability;
   /// 1 = always run ransac_iterations, as the authors' code. (0, 1]. [deviation: 500 fixed iterations cost
-  /// ~0.5 ms per candidate that passes the gates; at the inlier ratios of true loops (60–80 %, spec §11) ~50
+  /// ~0.5 ms per candidate that passes the gates; at the inlier ratios of true loops (60–80 %, algorithm §11) ~50
   /// suffice]
   double ransac_confidence = 0.999;
-  /// score_t formula (spec §7.3). [deviation: the spec's [CHOICE] is the paper's n_in / |LA|. Two scans 20–25 m
+  /// score_t formula (algorithm §7.3). [deviation: the first choice was the paper's n_in / |LA|. Two scans 20–25 m
   /// apart share a few objects; those few associate and agree, so n_in / |LA| is high although most of either
   /// graph is unmatched, and such pairs were nearly all the false loops on simulated sequences. Dividing by the
   /// larger graph's size keeps true revisits high and pushes partial overlaps down: EP 0.72 → 0.97 on the
@@ -228,10 +228,10 @@ struct VerificationConfig {
   ScoreFormula score_formula = ScoreFormula::kOverlap;
   /// false = no RANSAC (Table IV "w/o RANSAC"): score_t = score_c and the pose is fitted to all associations.
   bool use_ransac = true;
-  /// σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (spec §7.4, §8) [0, 1] (every score_t
+  /// σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) [0, 1] (every score_t
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
-  /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (spec §7.4); m > 0 = among the verified
+  /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
   /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: issue 13 item 3; tuned on the urban11
   /// and sub7 sequences, see BENCHMARKS.md ("Top-1 choice")]
@@ -241,7 +241,7 @@ struct VerificationConfig {
   /// loop (its pose is a valid constraint), but the top-1 protocol does not claim it as a revisit (m) (0, 1000].
   /// [deviation: issue 13 item 3; 3 m is the protocols' positive distance]
   double lateral_distance = 3.0;
-  /// RANSAC random seed; every candidate starts from it (spec §7.2 [CHOICE]) [0, 2³² − 1].
+  /// RANSAC random seed; every candidate starts from it (algorithm §7.2 [CHOICE]) [0, 2³² − 1].
   uint32_t seed = 42;
 };
 

@@ -1,5 +1,5 @@
 /// @file database.h
-/// @brief Frame store and global-descriptor retrieval (spec §5, §10).
+/// @brief Frame store and global-descriptor retrieval (algorithm §5, §10).
 #pragma once
 
 #include <cstddef>
@@ -19,7 +19,7 @@ struct RetrievedFrame {
 
 /// What the database keeps of a frame: its nodes and its global descriptor. Local descriptors are a pure function
 /// of the nodes (describeFrame) and are rebuilt for the ≤ K candidates of a query, which costs microseconds and
-/// keeps the store near 2 KB per frame (G2) instead of ~20 KB (spec §10).
+/// keeps the store near 2 KB per frame (G2) instead of ~20 KB (algorithm §10).
 struct StoredFrame {
   std::vector<Node> nodes;
   std::vector<float> global;

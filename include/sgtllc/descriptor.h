@@ -1,5 +1,5 @@
 /// @file descriptor.h
-/// @brief 147-D local descriptors: one triangle sub-vector per class-pair slot (spec §4).
+/// @brief 147-D local descriptors: one triangle sub-vector per class-pair slot (algorithm §4).
 #pragma once
 
 #include <array>
@@ -78,7 +78,7 @@ struct LocalDescriptor {
   std::vector<float> flat() const;
 };
 
-/// The vertex-rooted products of a triangle: a_i = (p_j − p_i)·(p_k − p_i), and likewise a_j, a_k (spec §4).
+/// The vertex-rooted products of a triangle: a_i = (p_j − p_i)·(p_k − p_i), and likewise a_j, a_k (algorithm §4).
 Eigen::Vector3d triangleTerms(const Eigen::Vector3d& pi, const Eigen::Vector3d& pj, const Eigen::Vector3d& pk);
 
 /// The per-vertex entries (e_i, e_j, e_k) of a triangle for a sub-vector kind, from its dot products @p t: the dot

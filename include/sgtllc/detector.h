@@ -38,7 +38,7 @@ struct Candidate {
   std::optional<Refinement> refinement;
 };
 
-/// Whether a frame's query searched the database, or why not (spec §5).
+/// Whether a frame's query searched the database, or why not (algorithm §5).
 enum class Search {
   kSearched,   ///< frames at least retrieval.exclude_recent older existed and were searched
   kTooRecent,  ///< no stored frame is retrieval.exclude_recent or more frames older: frame < exclude_recent

@@ -19,7 +19,7 @@ struct DescribedFrame {
   int numNodes() const { return graph.size(); }
 };
 
-/// Graph (spec §3), local descriptors (§4) and global descriptor (§5) of a node set over @p num_classes classes
+/// Graph (algorithm §3), local descriptors (§4) and global descriptor (§5) of a node set over @p num_classes classes
 /// (Config::numClasses(); the paper's seven by default). A pure function of the nodes and the configuration, so a
 /// database can store nodes alone and rebuild this on demand. Verifying a stored candidate needs no global
 /// descriptor (retrieval used the stored one): @p with_global = false skips it and leaves `global` empty.

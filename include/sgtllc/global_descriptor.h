@@ -1,5 +1,5 @@
 /// @file global_descriptor.h
-/// @brief Max-pooled global descriptor Des^G used for retrieval (spec §5).
+/// @brief Max-pooled global descriptor Des^G used for retrieval (algorithm §5).
 #pragma once
 
 #include <vector>
@@ -13,7 +13,7 @@ namespace sgtllc {
 /// the paper's seven classes).
 int globalDescriptorSize(GlobalMode mode, int num_classes = kNumPaperClasses);
 
-/// Des^G of a frame over the graph's C classes (spec §5). Every cell starts at 0 and takes the max over nodes i
+/// Des^G of a frame over the graph's C classes (algorithm §5). Every cell starts at 0 and takes the max over nodes i
 /// and their triangles (slots whose path exists with k ≠ i), computed from the triangle itself so that the local
 /// descriptor's kind and order never change it:
 /// - G1: cell 2C·l_i + C·fuzzy(m) + n, value = a_k (the paper's Des_i[α][2] in its own order);

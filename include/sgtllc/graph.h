@@ -1,5 +1,5 @@
 /// @file graph.h
-/// @brief Semantic graph: σ_d adjacency and second-order topology T_i[m][n] (spec §3).
+/// @brief Semantic graph: σ_d adjacency and second-order topology T_i[m][n] (algorithm §3).
 #pragma once
 
 #include <array>
@@ -16,7 +16,7 @@
 
 namespace sgtllc {
 
-/// Number of class-pair slots α = C·m + n per node with the paper's seven classes (spec §4).
+/// Number of class-pair slots α = C·m + n per node with the paper's seven classes (algorithm §4).
 inline constexpr int kNumPaperSlots = kNumPaperClasses * kNumPaperClasses;
 /// Most slots a node can have (kMaxClasses²).
 inline constexpr int kMaxSlots = kMaxClasses * kMaxClasses;
@@ -62,7 +62,7 @@ struct SemanticGraph {
   std::vector<Node> nodes;
   Eigen::MatrixXd distance;          ///< N×N centre distances (m)
   std::vector<uint8_t> adjacency;    ///< N×N row-major, 1 iff p ≠ q and distance < σ_d
-  std::vector<uint8_t> isolated;     ///< 1 iff the node has no neighbour (no descriptor content, spec §3)
+  std::vector<uint8_t> isolated;     ///< 1 iff the node has no neighbour (no descriptor content, algorithm §3)
   SlotRows<TwoStepPath> paths;       ///< paths[i][C·m + n] = T_i[m][n]
 
   int size() const { return static_cast<int>(nodes.size()); }
@@ -78,7 +78,7 @@ struct SemanticGraph {
 void checkNodeCount(size_t count, const GraphConfig& config, const std::string& what = "the frame");
 
 /// Builds the graph of @p nodes over @p num_classes classes C (LabelConfig::numClasses(); the paper's seven by
-/// default) (spec §3): A[p][q] = 1 iff ‖c_p − c_q‖ < σ_d; for every node i and class pair (m, n) the path
+/// default) (algorithm §3): A[p][q] = 1 iff ‖c_p − c_q‖ < σ_d; for every node i and class pair (m, n) the path
 /// i→j→k with l_j = m, l_k = n maximising d_ij + d_jk, ties to the lowest j then the lowest k, with k ≠ i unless
 /// allow_k_equals_i. O(N² · C). Throws sgtllc::Error for more than config.max_nodes nodes (checkNodeCount), a
 /// label outside 0..C−1, a non-finite centre, or C outside 1..kMaxClasses.

@@ -1,5 +1,5 @@
 /// @file labels.h
-/// @brief Mapping of raw per-point semantic ids to the stable classes: the paper's seven (spec §1, §8) and the
+/// @brief Mapping of raw per-point semantic ids to the stable classes: the paper's seven (algorithm §1, §8) and the
 ///        configuration's extra classes.
 #pragma once
 

@@ -1,6 +1,6 @@
 /// @file node_extraction.h
 /// @brief From a labelled scan to semantic-graph nodes: class split, voxel downsampling, FEC, centres and
-///        same-class duplicate suppression (spec §1–§2).
+///        same-class duplicate suppression (algorithm §1–§2).
 #pragma once
 
 #include <array>
@@ -30,7 +30,7 @@ struct ExtractionStats {
 inline constexpr float kMaxCoordinate = 1.0e6f;
 
 /// Nodes of one scan in class order (building first … traffic-sign, then the extra classes), each class in FEC
-/// order (spec §2 node order).
+/// order (algorithm §2 node order).
 struct NodeExtractionResult {
   std::vector<Node> nodes;
   ExtractionStats stats;

@@ -1,5 +1,5 @@
 /// @file ransac.h
-/// @brief Rigid alignment of point correspondences: SVD (Kabsch) and seeded RANSAC (spec §7.2, §7.5).
+/// @brief Rigid alignment of point correspondences: SVD (Kabsch) and seeded RANSAC (algorithm §7.2, §7.5).
 #pragma once
 
 #include <cstdint>
@@ -32,7 +32,7 @@ struct RansacResult {
   std::vector<int> inliers;                                ///< indices of its inlier pairs, ascending
 };
 
-/// RANSAC over correspondences (source_k, target_k) (spec §7.2): keeps the hypothesis with strictly the most
+/// RANSAC over correspondences (source_k, target_k) (algorithm §7.2): keeps the hypothesis with strictly the most
 /// inliers (so the first one found wins a tie); stops after `iterations`, once every pair is an inlier, or when
 /// the adaptive bound for `confidence` is reached. Deterministic for a given seed on every platform (no std::uniform_int_distribution).
 RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,

@@ -1,5 +1,5 @@
 /// @file selection.h
-/// @brief Which verified candidate a query reports (spec §7.4, and issue 13 item 3): the highest score_t, or the
+/// @brief Which verified candidate a query reports (algorithm §7.4, and issue 13 item 3): the highest score_t, or the
 ///        geometrically closest one among those scoring nearly as well.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace sgtllc {
 /// reports, or −1 if none passed verification (rejection != kNone).
 ///
 /// With `config.select_margin` = 0: the highest score_t; a tie goes to the later (higher-index) candidate, as the
-/// authors' `>=` (spec §7.4). With a margin m > 0: among the verified candidates whose score_t ≥ best − m, the one
+/// authors' `>=` (algorithm §7.4). With a margin m > 0: among the verified candidates whose score_t ≥ best − m, the one
 /// whose estimated translation ‖t(T_match_query)‖ is smallest (ties: higher score_t, then the later candidate). A
 /// revisit's neighbours along the old pass (3–20 m "lateral" matches) often verify too and can score a little
 /// higher; the revisit itself is the one the pose places closest. When the best score is a loop (> σ_4), only

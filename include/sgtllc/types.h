@@ -12,7 +12,7 @@
 
 namespace sgtllc {
 
-/// Number of the paper's stable semantic classes (spec §1): the default class set. A configuration may declare
+/// Number of the paper's stable semantic classes (algorithm §1): the default class set. A configuration may declare
 /// more (LabelConfig::extra_classes), numbered from 7 on; LabelConfig::numClasses() is the class count C.
 inline constexpr int kNumPaperClasses = 7;
 
@@ -20,7 +20,7 @@ inline constexpr int kNumPaperClasses = 7;
 /// has C³ entries (16 classes: 4,096 floats, 16 KB per frame; GlobalMode) and a local descriptor C² slots.
 inline constexpr int kMaxClasses = 16;
 
-/// The paper's stable class indices in the order every C×C hash uses (spec §1 table): c = train id − 13.
+/// The paper's stable class indices in the order every C×C hash uses (algorithm §1 table): c = train id − 13.
 enum SemanticClass : int {
   kBuilding = 0,
   kFence = 1,
@@ -42,7 +42,7 @@ struct LabeledCloud {
   std::vector<uint32_t> labels;         ///< raw per-point id, interpreted by LabelConfig (same length as points)
 };
 
-/// One semantic-graph node: an object instance reduced to its centre and class (spec §2).
+/// One semantic-graph node: an object instance reduced to its centre and class (algorithm §2).
 struct Node {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< p_i, metres, sensor frame
   int label = 0;                                      ///< l_i, stable class index 0..C−1 (0..6 by default)

@@ -1,5 +1,5 @@
 /// @file verification.h
-/// @brief Verifying one candidate frame: association, score_c gate, RANSAC, score_t and the SVD pose (spec §6–§7).
+/// @brief Verifying one candidate frame: association, score_c gate, RANSAC, score_t and the SVD pose (algorithm §6–§7).
 #pragma once
 
 #include <vector>
@@ -16,8 +16,8 @@ namespace sgtllc {
 /// Why a candidate got a zero score.
 enum class Rejection {
   kNone,              ///< passed the gates and RANSAC accepted a hypothesis
-  kFewAssociations,   ///< score_c < σ_3 or |LA| < min_associations (spec §7.1)
-  kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (spec §7.2)
+  kFewAssociations,   ///< score_c < σ_3 or |LA| < min_associations (algorithm §7.1)
+  kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (algorithm §7.2)
 };
 
 /// "none", "few_associations" or "ransac_failed", as printed by the CLI and written to reports.
@@ -27,11 +27,11 @@ const char* rejectionName(Rejection r);
 struct MatchResult {
   std::vector<NodeMatch> associations;  ///< LA, in query-node order
   std::vector<int> inliers;             ///< indices into associations of the RANSAC inliers
-  double score_c = 0.0;                 ///< |LA| / M, M = all query nodes, isolated ones included (spec §7.1)
-  double score_t = 0.0;                 ///< loop score; 0 unless rejection == kNone (spec §7.3)
+  double score_c = 0.0;                 ///< |LA| / M, M = all query nodes, isolated ones included (algorithm §7.1)
+  double score_t = 0.0;                 ///< loop score; 0 unless rejection == kNone (algorithm §7.3)
   Rejection rejection = Rejection::kFewAssociations;
   /// Maps query-frame points into the match frame: p_match = T_match_query · p_query. Kabsch on all inliers
-  /// (spec §7.5); the identity unless rejection == kNone.
+  /// (algorithm §7.5); the identity unless rejection == kNone.
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();
 };
 
@@ -41,7 +41,7 @@ RansacParams ransacParams(const VerificationConfig& config);
 /// Associates nodes, applies the score_c gate, runs RANSAC and fits the pose on its inliers.
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config);
 
-/// The loop decision for one candidate score: score_t > σ_4 (spec §7.4).
+/// The loop decision for one candidate score: score_t > σ_4 (algorithm §7.4).
 inline bool isLoop(const MatchResult& m, const VerificationConfig& config) {
   return m.rejection == Rejection::kNone && m.score_t > config.sigma_4;
 }

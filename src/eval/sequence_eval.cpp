@@ -83,7 +83,7 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
   out.n_frames = static_cast<int>(run.frames.size());
   const double positive = options.positive_distances.at(0);
   // Pairwise protocol: every (query, candidate) pair is a sample; pairs between the positive and the negative
-  // distance are left out (spec §9).
+  // distance are left out (algorithm §9).
   for (double d : options.positive_distances) {
     std::vector<ScoredSample> samples;
     for (const FrameRecord& f : run.frames) {

@@ -216,7 +216,7 @@ Field entriesField() {
 
 std::vector<Field> fieldsFor(const LabelConfig& labels) {
   std::vector<Field> f;
-  f.push_back(choice<LabelPreset>("labels.preset", "id convention of the input labels (spec §1, §8)",
+  f.push_back(choice<LabelPreset>("labels.preset", "id convention of the input labels (algorithm §1, §8)",
                                   [](Config& c) -> LabelPreset& { return c.labels.preset; },
                                   {{"semantickitti", LabelPreset::kSemanticKittiRaw},
                                    {"semantickitti_learning", LabelPreset::kSemanticKittiLearning},
@@ -255,7 +255,7 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(choice<SubVectorOrder>("descriptor.order", "sub-vector entries: (a_i,a_j,a_k) or (a_i,a_k,-a_j)",
                                      [](Config& c) -> SubVectorOrder& { return c.descriptor.order; },
                                      {{"paper", SubVectorOrder::kPaper}, {"code", SubVectorOrder::kCode}}));
-  f.push_back(choice<GlobalMode>("descriptor.global_mode", "global descriptor (spec §5)",
+  f.push_back(choice<GlobalMode>("descriptor.global_mode", "global descriptor (algorithm §5)",
                                  [](Config& c) -> GlobalMode& { return c.descriptor.global_mode; },
                                  {{"G1", GlobalMode::kG1}, {"G2", GlobalMode::kG2}, {"G3", GlobalMode::kG3}}));
   f.push_back(choice<RetrievalKey>("retrieval.key", "stored, searched key: class-pair distance histogram or Des^G",

@@ -131,7 +131,7 @@ void applyClassSet(Config& config, const YAML::Node& root, const std::string& so
 std::string configToYaml(const Config& config) {
   std::ostringstream out;
   out << "# sgtllc configuration. Keys mirror sgtllc::Config (include/sgtllc/config.h); omitted keys keep\n"
-         "# the defaults printed by `sgtllc config`. Symbols follow the SGT-LLC paper and the spec sections.\n";
+         "# the defaults printed by `sgtllc config`. Symbols follow the SGT-LLC paper and the sections of docs/algorithm.md.\n";
   std::vector<std::string> open;  // current section path
   for (const Field& f : fieldsFor(config.labels)) {
     std::vector<std::string> parts;

@@ -12,7 +12,7 @@
 namespace sgtllc::io {
 namespace {
 
-// SemanticKITTI raw id of each stable class (semantic-kitti.yaml), in class-index order (spec §1 table).
+// SemanticKITTI raw id of each stable class (semantic-kitti.yaml), in class-index order (algorithm §1 table).
 constexpr std::array<uint32_t, kNumPaperClasses> kSemanticKittiRawId = {50, 51, 70, 71, 72, 80, 81};
 
 constexpr const char* kAxisNames[3] = {"x", "y", "z"};

@@ -1,6 +1,6 @@
 /// @file metrics.h
 /// @brief Loop-closure metrics: precision–recall curve, F1max, EP, recall at 100 % precision, pose errors
-///        (spec §9).
+///        (algorithm §9).
 #pragma once
 
 #include <vector>
@@ -35,7 +35,7 @@ double f1Max(const PrCurve& curve);
 /// Largest recall reached at precision exactly 1 (0 if none; the appended point guarantees ≥ 0).
 double recallAt100Precision(const PrCurve& curve);
 
-/// Extended precision EP = ½ (P_Rmin + R_P100) (spec §9): P_Rmin is the precision at the first point of minimal
+/// Extended precision EP = ½ (P_Rmin + R_P100) (algorithm §9): P_Rmin is the precision at the first point of minimal
 /// recall — 1 if the top-scored group holds a positive, else 0.
 double extendedPrecision(const PrCurve& curve);
 

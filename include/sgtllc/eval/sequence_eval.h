@@ -1,5 +1,5 @@
 /// @file sequence_eval.h
-/// @brief The paper's protocol over a whole sequence (spec §9): every query's 15 candidates scored against
+/// @brief The paper's protocol over a whole sequence (algorithm §9): every query's 15 candidates scored against
 ///        ground truth, PR curves at several positive distances, the top-1 protocol, retrieval recall, pose
 ///        errors and per-frame cost.
 #pragma once
@@ -92,7 +92,7 @@ struct Top1Counts {
 };
 
 struct SequenceMetrics {
-  std::vector<CurveMetrics> pairwise;  ///< spec §9 pairwise protocol, one per positive distance ([0] is the main)
+  std::vector<CurveMetrics> pairwise;  ///< algorithm §9 pairwise protocol, one per positive distance ([0] is the main)
   /// One sample per query: its chosen candidate (FrameRecord::best) with its score_t, or score 0 if the detector
   /// reported it as lateral (its own pose puts it ≥ verification.lateral_distance away: not claimed as the
   /// revisit); if none passed the gates, its nearest global descriptor with score 0 (Scan Context / SSC
