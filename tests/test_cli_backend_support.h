@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
-#include <vector>
 
 #include <gtest/gtest.h>
 
