@@ -186,5 +186,23 @@ TEST_F(EvalAllProtocols, OneCommandReportsTheFoldersPairListToo) {
   EXPECT_NE(text_run.out.find("3 of 3"), std::string::npos) << text_run.out;
 }
 
+TEST_F(EvalAllProtocols, AFoldersPairListWithoutPairsIsSkippedButAGivenOneIsAnError) {
+  // A simulated sequence without revisits writes a loop_pairs.txt of comments only.
+  const std::string seq = path("seq");
+  test::makePlantedSequence(seq);
+  std::ofstream(seq + "/loop_pairs.txt") << "# query candidate label\n\n";
+  const test::CliRun r = test::run("eval " + seq + " --json", false);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j.contains("pair_list"));
+  EXPECT_EQ(j["top1"]["near"], 1);
+  const test::CliRun noted = test::run("eval " + seq);
+  EXPECT_EQ(noted.status, 0) << noted.out;
+  EXPECT_NE(noted.out.find("lists no pairs; the pair-list protocol is skipped"), std::string::npos) << noted.out;
+  const test::CliRun given = test::run("eval " + seq + " --pairs " + seq + "/loop_pairs.txt");
+  EXPECT_EQ(given.status, 1) << given.out;
+  EXPECT_NE(given.out.find("the pair list has no pairs"), std::string::npos) << given.out;
+}
+
 }  // namespace
 }  // namespace sgtllc::eval

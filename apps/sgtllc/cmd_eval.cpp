@@ -119,8 +119,14 @@ struct FolderPairs {
   FolderPairs(const EvalCliOptions& o, eval::EvalOptions& options) {
     const fs::path file = fs::path(o.sequence) / "loop_pairs.txt";
     if (!o.pairs.empty() || o.no_pairs || !fs::exists(file)) return;
+    // Before the run, so that a malformed list fails fast. A list without pairs (a simulated sequence without
+    // revisits) has nothing to score: said once and skipped, not an error as for an explicit --pairs.
+    pairs = eval::readPairList(file.string(), /*allow_empty=*/true);
+    if (pairs.empty()) {
+      std::cerr << "note: " << file.string() << " lists no pairs; the pair-list protocol is skipped\n";
+      return;
+    }
     path = file.string();
-    pairs = eval::readPairList(path);  // before the run: a malformed list fails fast
     auto chained = options.on_frame;
     options.on_frame = [this, chained](size_t i, const FrameResult& r, const LoopDetector& detector) {
       nodes.push_back(detector.database().nodes(r.frame));

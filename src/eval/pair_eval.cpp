@@ -23,7 +23,7 @@ bool parseFrame(const std::string& token, long* out) {
 
 }  // namespace
 
-std::vector<LoopPairLabel> readPairList(const std::string& path) {
+std::vector<LoopPairLabel> readPairList(const std::string& path, bool allow_empty) {
   std::ifstream in(path);
   if (!in) throw Error("cannot open pair list " + path);
   std::vector<LoopPairLabel> pairs;
@@ -45,7 +45,7 @@ std::vector<LoopPairLabel> readPairList(const std::string& path) {
   }
   if (in.bad()) throw Error("cannot read pair list " + path);
   // An empty list scores nothing and would print zero metrics: almost always the wrong file.
-  if (pairs.empty()) throw Error(path + ": the pair list has no pairs (only blank or '#' lines)");
+  if (pairs.empty() && !allow_empty) throw Error(path + ": the pair list has no pairs (only blank or '#' lines)");
   return pairs;
 }
 

@@ -21,8 +21,10 @@ struct LoopPairLabel {
 
 /// Reads `query candidate label` lines (frame numbers, label 1 = loop, 0 = not); `#` comments and blank lines
 /// are skipped. Throws sgtllc::Error naming the file and line for a malformed line (the line is echoed through
-/// io::quoteContent), and naming the file for a list without any pair (an empty list is almost always the wrong file).
-std::vector<LoopPairLabel> readPairList(const std::string& path);
+/// io::quoteContent), and naming the file for a list without any pair (an empty list given by the user is almost
+/// always the wrong file) unless @p allow_empty: a simulated sequence without revisits writes a loop_pairs.txt
+/// with none, which `sgtllc eval SEQ` then skips.
+std::vector<LoopPairLabel> readPairList(const std::string& path, bool allow_empty = false);
 
 struct PairRecord {
   LoopPairLabel pair;
