@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "accumulation.h"
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
@@ -21,6 +22,7 @@ struct EvalCliOptions {
   std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
   ClosingOutputs outputs;
   int threads = 0;
+  int accumulate = 1;  ///< --accumulate: scans merged into each frame
   bool json = false;
   bool force = false;
   bool no_pairs = false;  ///< --no-pairs: skip the folder's loop_pairs.txt
@@ -161,7 +163,7 @@ void runEval(const EvalCliOptions& o) {
     if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
     checkClosingOutputs(o.outputs, o.force);
   }
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   eval::EvalOptions options;
   options.threads = config.threads;
   Progress progress("frames", source.size());
@@ -179,6 +181,7 @@ void runEval(const EvalCliOptions& o) {
       }
     };
   }
+  applyAccumulation(source, o.accumulate, back.odometry.get(), o.sequence, o.calib);
 
   if (!o.pairs.empty()) {
     const auto pairs = eval::readPairList(o.pairs);
@@ -264,15 +267,20 @@ void addEvalCommand(CLI::App& app) {
                   "also close the loop: optimise this odometry (KITTI or TUM) with the detected loops and report "
                   "ATE/RPE of odometry and corrected trajectory against poses.txt");
   cmd->add_option("--calib", o->calib, "calib.txt for a KITTI --odometry (default: SEQ_DIR/calib.txt)");
+  addAccumulateOption(*cmd, o->accumulate);
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_flag("--force", o->force, "overwrite an existing report in --report (and existing output files)");
   cmd->callback([o] {
-    if (o->odometry.empty() && (!o->calib.empty() || !o->outputs.trajectory.empty() || !o->outputs.graph.empty() ||
-                                !o->outputs.loops.empty())) {
-      throw CLI::ValidationError("eval", "--calib, --out-trajectory, --out-graph and --out-loops need --odometry");
+    if (o->odometry.empty() && ((!o->calib.empty() && o->accumulate == 1) || !o->outputs.trajectory.empty() ||
+                                !o->outputs.graph.empty() || !o->outputs.loops.empty())) {
+      throw CLI::ValidationError("eval", "--calib (without --accumulate), --out-trajectory, --out-graph and "
+                                         "--out-loops need --odometry");
     }
     if (!o->odometry.empty() && !o->pairs.empty()) {
       throw CLI::ValidationError("eval", "--odometry needs the sequence protocol; drop --pairs");
+    }
+    if (o->accumulate > 1 && !o->nodes.empty()) {
+      throw CLI::ValidationError("eval", "--accumulate merges scans: give SEQ_DIR without --nodes");
     }
     o->command = commandLine();
     runEval(*o);

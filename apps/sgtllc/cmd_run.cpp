@@ -2,6 +2,7 @@
 #include <iostream>
 #include <memory>
 
+#include "accumulation.h"
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
@@ -21,6 +22,7 @@ struct RunOptions {
   std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
   ClosingOutputs outputs;
   int threads = 0;
+  int accumulate = 1;  ///< --accumulate: scans merged into each frame
   bool json = false;
   bool force = false;
   bool online = false;  ///< re-optimise at every loop instead of once at the end
@@ -50,11 +52,13 @@ void runSequence(const RunOptions& o) {
   // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
     odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
   }
+  applyAccumulation(source, o.accumulate, odometry.get(), o.sequence, o.calib);
+  AccumulationCost accumulation;
   std::unique_ptr<OnlineClosing> online;
   if (odometry && o.online) online = std::make_unique<OnlineClosing>(*odometry, config.backend);
   LoopDetector detector(config);
@@ -70,6 +74,7 @@ void runSequence(const RunOptions& o) {
                        [&](size_t index, const eval::LoadedFrame& loaded, const FrameResult& r) {
     frame_ms.push_back(r.timing.total_ms());
     load_ms.push_back(loaded.load_ms);
+    accumulation.add(loaded);
     const ExtractionStats& stats = loaded.stats;
     if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0 ||
         stats.capped_nodes > 0) {
@@ -124,6 +129,7 @@ void runSequence(const RunOptions& o) {
                 {"load_ms_median", eval::percentile(load_ms, 0.5)},
                 {"db_bytes_per_frame", bytes_per_frame},
                 {"loop_list", list}};
+    if (o.accumulate > 1) out["accumulation"] = accumulation.json(o.accumulate);
     if (closing) out["backend"] = closingJson(edges, *closing);
     std::cout << jsonText(out) << "\n";
   } else {
@@ -131,6 +137,7 @@ void runSequence(const RunOptions& o) {
               << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
               << " (load not included: median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
               << fixed(bytes_per_frame, 0) << " bytes per frame\n";
+    if (o.accumulate > 1) std::cout << accumulation.text(o.accumulate);
     if (closing) std::cout << closingSummary(edges, *closing);
     for (const std::string* path : {&o.out, &o.outputs.trajectory, &o.outputs.graph, &o.outputs.loops}) {
       if (!path->empty()) std::cout << "wrote " << *path << "\n";
@@ -151,7 +158,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--odometry", o->odometry,
                   "close the loop: optimise this odometry (KITTI or TUM, one pose per frame) with the loops");
   cmd->add_option("--calib", o->calib,
-                  "KITTI calib.txt for a KITTI --odometry in cam0 (default: SEQ_DIR/calib.txt if it exists)");
+                  "KITTI calib.txt for a KITTI --odometry (or poses.txt, with --accumulate) in cam0 (default: "
+                  "SEQ_DIR/calib.txt if it exists)");
+  addAccumulateOption(*cmd, o->accumulate);
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
@@ -165,9 +174,13 @@ void addRunCommand(CLI::App& app) {
       throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
     }
     const bool closes = !o->outputs.trajectory.empty() || !o->outputs.graph.empty() || !o->outputs.loops.empty() ||
-                        !o->calib.empty() || o->online;
+                        (!o->calib.empty() && o->accumulate == 1) || o->online;
     if (closes && o->odometry.empty()) {
-      throw CLI::ValidationError("run", "--out-trajectory, --out-graph, --out-loops, --calib and --online need --odometry");
+      throw CLI::ValidationError("run", "--out-trajectory, --out-graph, --out-loops, --calib (without --accumulate) "
+                                        "and --online need --odometry");
+    }
+    if (o->accumulate > 1 && !o->nodes.empty()) {
+      throw CLI::ValidationError("run", "--accumulate merges scans: give SEQ_DIR, not --nodes");
     }
     runSequence(*o);
   });
