@@ -52,4 +52,5 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindIo(m);
   sgtllc::python::bindMetrics(m);
   sgtllc::python::bindBackend(m);
+  sgtllc::python::bindAccumulate(m);
 }
