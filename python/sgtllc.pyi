@@ -27,7 +27,7 @@ class GlobalMode(Enum):
 class SubVectorKind(Enum):
     DOT_PRODUCTS: int; ANGLES: int; LENGTHS: int
 class RetrievalMethod(Enum):
-    BRUTE_FORCE: int; KD_TREE: int
+    BRUTE_FORCE: int; KD_TREE: int; IVF: int
 class RetrievalKey(Enum):
     DISTANCE_HISTOGRAM: int; GLOBAL_DESCRIPTOR: int
 class NodeScore(Enum):
@@ -78,6 +78,9 @@ class RetrievalConfig:
     key: RetrievalKey
     histogram_bins: int
     histogram_range: float
+    ivf_lists: int
+    ivf_probe: int
+    ivf_train_frames: int
 class AssociationConfig:
     sigma_1: float
     max_delta_aj: float

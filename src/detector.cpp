@@ -27,7 +27,7 @@ const Config& validated(const Config& config) {
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, config.labels, config.graph.max_nodes, config.threads),
-      database_(config.retrieval.method),
+      database_(config.retrieval, config.threads),
       clouds_(config.registration, config.labels) {
 }
 

@@ -145,6 +145,11 @@ struct DescriptorConfig {
 enum class RetrievalMethod {
   kBruteForce,  ///< exact linear scan (algorithm §5 [CHOICE]) [default]
   kKdTree,      ///< exact kd-tree search (nanoflann); frames at equal distance up to float rounding may swap
+  /// Inverted file for large maps (algorithm §5 "Retrieval at scale"): FAISS k-means centroids over the stored keys,
+  /// each frame in its nearest centroid's list, and an exact scan of the frames in the retrieval.ivf_probe nearest
+  /// lists. Approximate (a true neighbour in an unscanned list is missed); the exact scan until
+  /// retrieval.ivf_train_frames frames are stored. Needs sgtllc built with FAISS (libfaiss-dev).
+  kIvf,
 };
 
 /// What a frame is stored and searched by.
@@ -171,6 +176,14 @@ struct RetrievalConfig {
   /// No query before this many frames are in the database (authors' code: 150) [0, 1000000].
   int warmup_frames = 0;
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
+  /// Lists of the inverted file (method ivf); 0: 2·√N at training, within [16, 16384] [0, 65536].
+  int ivf_lists = 0;
+  /// Lists a query scans (method ivf). 32 of the 2,000 lists of a million-frame map found 0.99+ of the exact
+  /// top-15 (BENCHMARKS.md "Retrieval at scale") [1, 65536].
+  int ivf_probe = 32;
+  /// Frames stored before the inverted file is trained (method ivf); fewer are searched exactly. With
+  /// ivf_lists 0 it is trained again each time the database has grown fourfold [64, 1000000].
+  int ivf_train_frames = 20000;
 };
 
 /// How the node similarity S[i][j] is formed (algorithm §6).
