@@ -16,6 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 struct CliResult {
   int status = -1;
@@ -57,6 +58,23 @@ TEST_F(SimCli, WritesAReadableSequenceAndASummary) {
   EXPECT_EQ(seq.size(), 3u);
   EXPECT_GT(seq.load(2).points.size(), 90000u);
   EXPECT_FALSE(fs::exists(path("seq/preview_scan.png")));
+}
+
+TEST_F(SimCli, WarnsWhenThePlannedRevisitsDoNotFit) {
+  // Three frames (a few metres) cannot hold the one planned revisit (at least 80 m after 150 m of road).
+  const CliResult r = simulate("--out " + path("seq") + " --frames 3 --seed 4 --no-preview");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string head = "warning: only 0 of the 1 planned revisit fit in 3 frames; --frames ";
+  const size_t at = r.out.find(head);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const int needed = std::atoi(r.out.c_str() + at + head.size());
+  EXPECT_GT(needed, 300);  // 80 m of revisit at 30 % of the route and ~8.5 m/s
+  EXPECT_LT(needed, 1000);
+  EXPECT_THAT(r.out, HasSubstr(" would hold it (without a revisit the sequence has no loops to find)\n"));
+  // No revisit planned: nothing to warn about.
+  const CliResult none = simulate("--out " + path("none") + " --frames 3 --seed 4 --revisits 0 --no-preview");
+  ASSERT_EQ(none.status, 0) << none.out;
+  EXPECT_THAT(none.out, Not(HasSubstr("warning")));
 }
 
 TEST_F(SimCli, BadValuesExitWithUsageErrors) {

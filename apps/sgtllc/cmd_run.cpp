@@ -118,6 +118,7 @@ void runSequence(const RunOptions& o) {
       list.push_back({{"query", l.query},
                       {"match", l.match},
                       {"score", l.score},
+                      {"score_t", l.score},
                       {"score_c", l.score_c},
                       {"T_match_query", matrixJson(l.T_match_query)}});
     }
@@ -135,7 +136,7 @@ void runSequence(const RunOptions& o) {
   } else {
     std::cout << "frames " << n << ", loops " << loops.size() << ", ms per frame: median "
               << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
-              << " (load not included: median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
+              << " (load (not included): median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
               << fixed(bytes_per_frame, 0) << " bytes per frame\n";
     if (o.accumulate > 1) std::cout << accumulation.text(o.accumulate);
     if (closing) std::cout << closingSummary(edges, *closing);

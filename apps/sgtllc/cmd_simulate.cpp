@@ -12,6 +12,7 @@
 #include "common.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/sim/preview.h"
+#include "sgtllc/sim/revisit_fit.h"
 #include "sgtllc/sim/sequence_writer.h"
 
 namespace sgtllc::cli {
@@ -92,6 +93,18 @@ void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const s
             << fixed(st.path_length, 0) << " m driven)\n";
 }
 
+/// Said before writing: the route of a short sequence cannot hold every planned revisit (issue 12 item 4).
+void warnIfRevisitsDoNotFit(const sim::Simulator& simulator) {
+  const sim::SimConfig& c = simulator.config();
+  const int planned = c.plannedRevisits(), driven = sim::drivenRevisits(simulator);
+  if (driven >= planned) return;
+  std::cerr << "warning: only " << driven << " of the " << planned << " planned revisit" << (planned == 1 ? "" : "s")
+            << " fit in " << c.frames << " frames";
+  const int needed = sim::framesForRevisits(c);
+  if (needed > 0) std::cerr << "; --frames " << needed << " would hold " << (planned == 1 ? "it" : "them all");
+  std::cerr << (driven == 0 ? " (without a revisit the sequence has no loops to find)" : "") << "\n";
+}
+
 void simulate(const SimulateOptions& o) {
   sim::SimConfig config;
   config.frames = o.frames;
@@ -104,6 +117,7 @@ void simulate(const SimulateOptions& o) {
   sim::checkOutputDir(o.out, o.force);  // before building the world; writeSequence checks again
   const auto start = std::chrono::steady_clock::now();
   const sim::Simulator simulator(config);
+  warnIfRevisitsDoNotFit(simulator);
   sim::WriteOptions w;
   w.dir = o.out;
   w.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());

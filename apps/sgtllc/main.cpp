@@ -4,13 +4,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "build_info.h"
 #include "commands.h"
 #include "common.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "sgtllc 0.1.0");
+  app.set_version_flag("--version", sgtllc::cli::softwareText());
   sgtllc::cli::addPairCommand(app);
   sgtllc::cli::addRunCommand(app);
   sgtllc::cli::addOptimizeCommand(app);

@@ -122,8 +122,8 @@ enum class SubVectorOrder {
 /// Global descriptor variants (algorithm §5).
 enum class GlobalMode {
   kG1,  ///< paper: 98-D fuzzy pooling of max a_k (floored at 0)
-  kG2,  ///< code: 343-D, max 1 − cos θ_k
-  kG3,  ///< hybrid: 98-D fuzzy pooling of max 1 − cos θ_k [default]
+  kG2,  ///< code: 343-D, max 1 − cos θ_k [default: DescriptorConfig::global_mode]
+  kG3,  ///< hybrid: 98-D fuzzy pooling of max 1 − cos θ_k (the first default)
 };
 
 /// What a slot's three entries measure (the paper's Table IV ablation). Each entry belongs to one triangle vertex.
