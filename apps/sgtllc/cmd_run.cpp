@@ -1,4 +1,5 @@
 // `sgtllc run SEQ_DIR` / `sgtllc run --nodes NODE_DIR`: streams a sequence through the online detector.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -6,9 +7,11 @@
 #include "common.h"
 #include "loop_closing.h"
 #include "sgtllc/eval/frame_source.h"
+#include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
 #include "sgtllc/io/output_file.h"
+#include "sgtllc/map/map_file.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -19,6 +22,7 @@ struct RunOptions {
   std::string out;
   std::string config;
   std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
+  std::string save_map;         ///< --save-map: the database, names and poses as a map file
   ClosingOutputs outputs;
   int threads = 0;
   bool json = false;
@@ -45,16 +49,50 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
   }
 }
 
+/// Poses a saved map places its frames by (T_world_lidar): the --odometry, else SEQ_DIR/poses.txt with its
+/// calib.txt when both exist (frames named by their line), else none. @p from says which, for the summary.
+std::vector<Eigen::Matrix4d> mapPoses(const RunOptions& o, const Odometry* odometry, const eval::FrameSource& source,
+                                      std::string* from) {
+  namespace fs = std::filesystem;
+  std::vector<Eigen::Matrix4d> poses;
+  if (odometry) {
+    for (const Eigen::Isometry3d& T : odometry->poses) poses.push_back(T.matrix());
+    *from = odometry->path + (odometry->cam0 ? " (KITTI cam0 axes: no calib)" : "");
+    return poses;
+  }
+  const fs::path dir = o.sequence.empty() ? fs::path(o.nodes) : fs::path(o.sequence);
+  const std::string truth_path = (dir / "poses.txt").string(), calib = (dir / "calib.txt").string();
+  if (!fs::is_regular_file(truth_path) || !fs::is_regular_file(calib)) {
+    *from = "none (no --odometry, no poses.txt and calib.txt in " + dir.string() + ")";
+    return poses;
+  }
+  const eval::GroundTruth truth = eval::GroundTruth::fromKitti(truth_path, calib);
+  for (size_t i = 0; i < source.size(); ++i) {
+    if (!truth.has(source.number(i))) {
+      throw Error(truth_path + ": no pose for frame " + source.name(i) + " (" + std::to_string(truth.size()) +
+                  " lines; frames must be named by their line number), so --save-map cannot place the frames; "
+                  "give --odometry");
+    }
+    poses.push_back(truth.pose(source.number(i)));
+  }
+  *from = truth_path;
+  return poses;
+}
+
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
+  if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
     odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
   }
+  std::string poses_from;
+  std::vector<Eigen::Matrix4d> map_poses;
+  if (!o.save_map.empty()) map_poses = mapPoses(o, odometry.get(), source, &poses_from);
   std::unique_ptr<OnlineClosing> online;
   if (odometry && o.online) online = std::make_unique<OnlineClosing>(*odometry, config.backend);
   LoopDetector detector(config);
@@ -104,6 +142,12 @@ void runSequence(const RunOptions& o) {
     writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend, o.force);
   }
   if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);
+  if (!o.save_map.empty()) {
+    std::vector<std::string> names;
+    for (size_t i = 0; i < source.size(); ++i) names.push_back(source.name(i));
+    map::writeMapFile(o.save_map, map::makeMap(detector.database(), config, std::move(names), std::move(map_poses)),
+                      io::overwriteIf(o.force));
+  }
 
   const int n = detector.numFrames();
   const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;
@@ -125,6 +169,7 @@ void runSequence(const RunOptions& o) {
                 {"db_bytes_per_frame", bytes_per_frame},
                 {"loop_list", list}};
     if (closing) out["backend"] = closingJson(edges, *closing);
+    if (!o.save_map.empty()) out["map"] = {{"path", o.save_map}, {"poses", poses_from}};
     std::cout << jsonText(out) << "\n";
   } else {
     std::cout << "frames " << n << ", loops " << loops.size() << ", ms per frame: median "
@@ -135,6 +180,7 @@ void runSequence(const RunOptions& o) {
     for (const std::string* path : {&o.out, &o.outputs.trajectory, &o.outputs.graph, &o.outputs.loops}) {
       if (!path->empty()) std::cout << "wrote " << *path << "\n";
     }
+    if (!o.save_map.empty()) std::cout << "wrote map " << o.save_map << " (" << n << " frames; poses: " << poses_from << ")\n";
   }
 }
 
@@ -152,6 +198,9 @@ void addRunCommand(CLI::App& app) {
                   "close the loop: optimise this odometry (KITTI or TUM, one pose per frame) with the loops");
   cmd->add_option("--calib", o->calib,
                   "KITTI calib.txt for a KITTI --odometry in cam0 (default: SEQ_DIR/calib.txt if it exists)");
+  cmd->add_option("--save-map", o->save_map,
+                  "save the database as a map file for `sgtllc localize` (frames named as the input; poses from "
+                  "--odometry, else SEQ_DIR/poses.txt with calib.txt when present)");
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");

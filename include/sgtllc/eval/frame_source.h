@@ -44,6 +44,11 @@ class FrameSource {
   std::function<LoadedFrame(size_t)> loader_;
 };
 
+/// Loads every frame of @p source in parallel batches on @p threads threads and hands them to @p on_frame one by
+/// one, in order, on the calling thread (so what it does cannot depend on the thread count). The first frame that
+/// fails to load throws its sgtllc::Error once the frames before it were handed over.
+void streamFrames(const FrameSource& source, int threads, const std::function<void(size_t, LoadedFrame&)>& on_frame);
+
 /// Feeds every frame of @p source to @p detector in order. Frames are read and clustered in parallel batches on
 /// @p threads threads (a pure function of each frame); the detector then sees them one by one, so results are
 /// the same at any thread count. @p on_frame receives each frame's index, loaded data (nodes moved out) and result.
