@@ -49,23 +49,17 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
   }
 }
 
-/// Poses a saved map places its frames by (T_world_lidar): the --odometry, else SEQ_DIR/poses.txt with its
-/// calib.txt when both exist (frames named by their line), else none. @p from says which, for the summary.
-std::vector<Eigen::Matrix4d> mapPoses(const RunOptions& o, const Odometry* odometry, const eval::FrameSource& source,
-                                      std::string* from) {
+/// Poses a saved map places its frames by (T_world_lidar) when there is no --odometry (then the corrected
+/// trajectory is stored): SEQ_DIR/poses.txt with its calib.txt when both exist (frames named by their line), else
+/// none. A --nodes folder holds only node files, so its poses come from --odometry. @p from says which.
+std::vector<Eigen::Matrix4d> sequencePoses(const RunOptions& o, const eval::FrameSource& source, std::string* from) {
   namespace fs = std::filesystem;
   std::vector<Eigen::Matrix4d> poses;
-  if (odometry) {
-    for (const Eigen::Isometry3d& T : odometry->poses) poses.push_back(T.matrix());
-    *from = odometry->path + (odometry->cam0 ? " (KITTI cam0 axes: no calib)" : "");
-    return poses;
-  }
-  const fs::path dir = o.sequence.empty() ? fs::path(o.nodes) : fs::path(o.sequence);
+  *from = "none (give --odometry, or a SEQ_DIR with poses.txt and calib.txt)";
+  if (o.sequence.empty()) return poses;
+  const fs::path dir(o.sequence);
   const std::string truth_path = (dir / "poses.txt").string(), calib = (dir / "calib.txt").string();
-  if (!fs::is_regular_file(truth_path) || !fs::is_regular_file(calib)) {
-    *from = "none (no --odometry, no poses.txt and calib.txt in " + dir.string() + ")";
-    return poses;
-  }
+  if (!fs::is_regular_file(truth_path) || !fs::is_regular_file(calib)) return poses;
   const eval::GroundTruth truth = eval::GroundTruth::fromKitti(truth_path, calib);
   for (size_t i = 0; i < source.size(); ++i) {
     if (!truth.has(source.number(i))) {
@@ -92,7 +86,7 @@ void runSequence(const RunOptions& o) {
   }
   std::string poses_from;
   std::vector<Eigen::Matrix4d> map_poses;
-  if (!o.save_map.empty()) map_poses = mapPoses(o, odometry.get(), source, &poses_from);
+  if (!o.save_map.empty() && !odometry) map_poses = sequencePoses(o, source, &poses_from);
   std::unique_ptr<OnlineClosing> online;
   if (odometry && o.online) online = std::make_unique<OnlineClosing>(*odometry, config.backend);
   LoopDetector detector(config);
@@ -140,6 +134,8 @@ void runSequence(const RunOptions& o) {
   if (odometry) {
     closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
     writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend, o.force);
+    for (const Eigen::Isometry3d& T : closing->poses) map_poses.push_back(T.matrix());
+    poses_from = "the corrected trajectory of " + odometry->path + (odometry->cam0 ? " (KITTI cam0 axes: no calib)" : "");
   }
   if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);
   if (!o.save_map.empty()) {
@@ -199,8 +195,8 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--calib", o->calib,
                   "KITTI calib.txt for a KITTI --odometry in cam0 (default: SEQ_DIR/calib.txt if it exists)");
   cmd->add_option("--save-map", o->save_map,
-                  "save the database as a map file for `sgtllc localize` (frames named as the input; poses from "
-                  "--odometry, else SEQ_DIR/poses.txt with calib.txt when present)");
+                  "save the database as a map file for `sgtllc localize` (frames named as the input; poses: the "
+                  "corrected --odometry trajectory, else SEQ_DIR/poses.txt with calib.txt when present)");
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
