@@ -1,5 +1,6 @@
 #include "sgtllc/map/map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <unordered_set>
