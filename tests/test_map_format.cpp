@@ -9,6 +9,7 @@
 #include "sgtllc/map/map_format.h"
 #include "sgtllc/map/relocalizer.h"
 #include "test_map_support.h"
+#include "test_support.h"
 
 namespace sgtllc {
 namespace {
@@ -160,6 +161,33 @@ TEST(Relocalizer, ALoadedMapAnswersAsTheInMemoryOneAtAnyThreadCount) {
   EXPECT_EQ(a.map().size(), 100);  // nothing inserted
 }
 
+/// Real scans: a map of KITTI 00 frames 52, 88 and 850 (saved and loaded), queried with scan 4501, the revisit
+/// of 52 2.96 m away: found among all three without any exclusion, with the ICP-refined reference pose.
+TEST(Relocalizer, PlacesARealScanInAMapOfRealScans) {
+  const Config config;
+  LoopDetector detector(config);
+  for (const char* frame : {"000052", "000088", "000850"}) detector.process(test::kittiScan(frame));
+  Eigen::Matrix4d T_world_52 = test::rigid(30.0, 0.0, 0.0, Eigen::Vector3d(100.0, -5.0, 1.0));
+  const std::vector<Eigen::Matrix4d> poses = {T_world_52, Eigen::Matrix4d::Identity(), Eigen::Matrix4d::Identity()};
+  const Map saved = map::makeMap(detector.database(), config, {"000052", "000088", "000850"}, poses);
+  const map::Relocalizer relocalizer(map::decodeMap(map::encodeMap(saved), "kitti.sgtmap"), config);
+  const LabeledCloud query = test::kittiScan("004501");
+  const map::Relocalization r = relocalizer.localize(query);
+  ASSERT_TRUE(r.localized);
+  EXPECT_EQ(r.map_frame, 0);
+  EXPECT_EQ(r.search.extraction.input_points, query.points.size());
+  const auto err = test::poseError(r.T_mapframe_query, test::referencePose4501To52());
+  EXPECT_LT(err.translation_m, 0.15);
+  EXPECT_LT(err.rotation_deg, 1.0);
+  ASSERT_TRUE(r.T_world_query.has_value());
+  EXPECT_TRUE(r.T_world_query->isApprox(T_world_52 * r.T_mapframe_query, 1e-12));
+  // The points path is the node path after extraction.
+  const map::Relocalization from_nodes = relocalizer.localize(NodeExtractor(config.cluster, config.labels,
+                                                                            config.graph.max_nodes).extract(query).nodes);
+  EXPECT_EQ(from_nodes.T_mapframe_query, r.T_mapframe_query);
+  EXPECT_EQ(from_nodes.score, r.score);
+}
+
 TEST(Relocalizer, RefusesAMapOfAnotherConfiguration) {
   Config other = mapTestConfig();
   other.retrieval.histogram_bins = 12;
@@ -245,6 +273,14 @@ TEST(MapFormat, NewerVersionsAreNamedAndUnknownSectionsSkipped) {
   setWord(longer, 36, crcOf(std::string_view(longer).substr(0, 36)));
   map::MapLayout layout;
   const Map m = map::decodeMap(longer, "m.sgtmap", RetrievalMethod::kBruteForce, &layout);
+  // The same section twice is damage, not an extension.
+  std::string twice = longer + extra;
+  setWord(twice, 12, 7);
+  const uint64_t twice_size = twice.size();
+  std::memcpy(&twice[16], &twice_size, 8);
+  setWord(twice, 36, crcOf(std::string_view(twice).substr(0, 36)));
+  EXPECT_EQ(problemOf(twice, &message), MapProblem::kCorrupted);
+  EXPECT_NE(message.find("a second XIDX section"), std::string::npos) << message;
   EXPECT_EQ(m.size(), 3);
   ASSERT_EQ(layout.sections.size(), 6u);
   EXPECT_EQ(layout.sections.back().tag, "XIDX");

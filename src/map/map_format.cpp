@@ -4,11 +4,11 @@
 
 #include <zlib.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
-#include <limits>
 #include <optional>
+#include <set>
 
 namespace sgtllc::map {
 
@@ -264,6 +264,7 @@ Map decodeMap(std::string_view bytes, const std::string& source, RetrievalMethod
   seen.fingerprint = print;
   seen.file_bytes = file_bytes;
   Parts parts;
+  std::set<std::string> tags;
   size_t pos = kHeaderBytes;
   for (uint32_t s = 0; s < num_sections; ++s) {
     const std::string at = "corrupted map: section " + std::to_string(s + 1) + " of " + std::to_string(num_sections);
@@ -284,6 +285,7 @@ Map decodeMap(std::string_view bytes, const std::string& source, RetrievalMethod
       fail(MapProblem::kNewerVersion, "map section " + tag + " has version " + std::to_string(section_version) +
                                           ", newer than this sgtllc reads (" + std::to_string(kSectionVersion) + ")");
     }
+    if (!tags.insert(tag).second) fail(MapProblem::kCorrupted, at + ": a second " + tag + " section");
     if (kind) {
       Reader r(bytes.substr(pos + kSectionHeadBytes, static_cast<size_t>(payload)),
                source + ": corrupted map: section " + tag + ": ");
