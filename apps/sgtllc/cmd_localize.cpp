@@ -117,7 +117,7 @@ void localizeSequence(const LocalizeOptions& o) {
     if (same != map_frames.end() && sameNodes(frame.nodes, m.database.nodes(same->second))) {
       throw Error(query_name + ": frame " + source.name(index) + " is frame " + source.name(index) + " of map " +
                   o.map + " (same name, same nodes): the query sequence is the map's own session. Localize "
-                  "another session (e.g. `sgtllc simulate --world-of`), or build the map from another one");
+                  "another session of the same place, or build the map from another one");
     }
     Hit& h = hits.emplace_back(Hit{source.name(index), "", relocalizer.localize(std::move(frame.nodes))});
     h.r.search.timing.extraction_ms = frame.extraction_ms;
