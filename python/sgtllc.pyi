@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from enum import Enum
-from typing import Iterator, MutableMapping, MutableSequence, Optional, Sequence, Tuple
+from typing import Iterator, overload, MutableMapping, MutableSequence, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -257,15 +257,41 @@ class PairResult:
 class LoopDetector:
     num_frames: int
     config: Config
+    @overload
     def __init__(self, config: Config = ...) -> None: ...
+    @overload
+    def __init__(self, map: Map, config: Config = ...) -> None: ...
     def process(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> FrameResult: ...
     def process_nodes(self, centres: ArrayLike, classes: ArrayLike) -> FrameResult: ...
     def first_searched_frame(self) -> int: ...
     def nodes(self, frame: int) -> Nodes: ...
+    def to_map(self, names: Optional[Sequence[str]] = None, poses: Optional[ArrayLike] = None) -> Map: ...
 def compare_pair(query_points: ArrayLike, query_labels: ArrayLike, match_points: ArrayLike, match_labels: ArrayLike,
                  config: Optional[Config] = None, drop_nonfinite: bool = False) -> PairResult: ...
 def compare_nodes(query_centres: ArrayLike, query_classes: ArrayLike, match_centres: ArrayLike,
                   match_classes: ArrayLike, config: Optional[Config] = None) -> PairResult: ...
+
+# --- maps (map.cpp) ---
+class Map:
+    num_frames: int
+    names: list[str]
+    has_poses: bool
+    poses: Optional[np.ndarray]
+    config: list[Tuple[str, str]]
+    def nodes(self, frame: int) -> Nodes: ...
+    def save(self, path: str, force: bool = False) -> None: ...
+def load_map(path: str, config: Optional[Config] = None) -> Map: ...
+class Relocalization:
+    search: FrameResult
+    map_frame: int
+    localized: bool
+    score: float
+    T_mapframe_query: np.ndarray
+    T_world_query: Optional[np.ndarray]
+class Relocalizer:
+    def __init__(self, map: Map, config: Config = ...) -> None: ...
+    def localize(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> Relocalization: ...
+    def localize_nodes(self, centres: ArrayLike, classes: ArrayLike) -> Relocalization: ...
 
 # --- readers (io.cpp) ---
 def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32

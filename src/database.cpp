@@ -37,6 +37,11 @@ FrameDatabase::~FrameDatabase() = default;
 FrameDatabase::FrameDatabase(FrameDatabase&&) noexcept = default;
 FrameDatabase& FrameDatabase::operator=(FrameDatabase&&) noexcept = default;
 
+void FrameDatabase::setMethod(RetrievalMethod method) {
+  impl_->method = method;
+  impl_->kdtree.reset();
+}
+
 int FrameDatabase::size() const { return static_cast<int>(impl_->nodes.size()); }
 const std::vector<Node>& FrameDatabase::nodes(int index) const { return impl_->nodes.at(index); }
 const float* FrameDatabase::global(int index) const {

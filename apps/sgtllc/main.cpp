@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   sgtllc::cli::addOptimizeCommand(app);
   sgtllc::cli::addEvalCommand(app);
   sgtllc::cli::addSimulateCommand(app);
+  sgtllc::cli::addLocalizeCommand(app);
+  sgtllc::cli::addMapCommand(app);
   sgtllc::cli::addConfigCommand(app);
   std::string& line = sgtllc::cli::commandLine();
   line = "sgtllc";

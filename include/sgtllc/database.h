@@ -50,6 +50,10 @@ class FrameDatabase {
   /// from the first frame's.
   int add(StoredFrame frame);
 
+  /// Switches the search structure (a loaded map is searched as the configuration says); results are unchanged
+  /// up to the ties RetrievalMethod::kKdTree documents.
+  void setMethod(RetrievalMethod method);
+
   int size() const;
   /// Nodes of frame @p index.
   const std::vector<Node>& nodes(int index) const;

@@ -160,8 +160,7 @@ void loadAccumulated(const std::function<LabeledCloud(size_t)>& read,
 
 }  // namespace
 
-void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
-                    const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame) {
+void streamFrames(const FrameSource& source, int threads, const std::function<void(size_t, LoadedFrame&)>& on_frame) {
   const size_t batch = static_cast<size_t>(std::max(1, 4 * std::max(1, threads)));
   std::vector<LoadedFrame> frames;
   std::vector<std::exception_ptr> errors;
@@ -184,13 +183,20 @@ void streamSequence(const FrameSource& source, LoopDetector& detector, int threa
     }
     for (size_t k = 0; k < count; ++k) {
       if (errors[k]) std::rethrow_exception(errors[k]);
-      FrameResult r = detector.process(std::move(frames[k].nodes), std::move(frames[k].clouds));
-      r.timing.extraction_ms = frames[k].extraction_ms;
-      r.timing.refinement_ms += frames[k].clouds_ms;
-      r.extraction = frames[k].stats;
-      on_frame(first + k, frames[k], r);
+      on_frame(first + k, frames[k]);
     }
   }
+}
+
+void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
+                    const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame) {
+  streamFrames(source, threads, [&](size_t index, LoadedFrame& frame) {
+    FrameResult r = detector.process(std::move(frame.nodes), std::move(frame.clouds));
+    r.timing.extraction_ms = frame.extraction_ms;
+    r.timing.refinement_ms += frame.clouds_ms;
+    r.extraction = frame.stats;
+    on_frame(index, frame, r);
+  });
 }
 
 }  // namespace sgtllc::eval

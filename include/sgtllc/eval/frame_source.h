@@ -60,15 +60,19 @@ class FrameSource {
   int scans_ = 1;
   std::vector<Eigen::Isometry3d> poses_;
 
-  friend void streamSequence(const FrameSource&, LoopDetector&, int,
-                             const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>&);
+  friend void streamFrames(const FrameSource&, int, const std::function<void(size_t, LoadedFrame&)>&);
 };
+
+/// Loads every frame of @p source in parallel batches on @p threads threads and hands them to @p on_frame one by
+/// one, in order, on the calling thread (so what it does cannot depend on the thread count). The first frame that
+/// fails to load throws its sgtllc::Error once the frames before it were handed over. An accumulating source reads
+/// its raw scans in parallel, merges them in order (one ScanAccumulator: each scan is read once, at most N held)
+/// and reduces the merged scans in parallel.
+void streamFrames(const FrameSource& source, int threads, const std::function<void(size_t, LoadedFrame&)>& on_frame);
 
 /// Feeds every frame of @p source to @p detector in order. Frames are read and clustered in parallel batches on
 /// @p threads threads (a pure function of each frame); the detector then sees them one by one, so results are
-/// the same at any thread count. An accumulating source reads its raw scans in parallel, merges them in order
-/// (one ScanAccumulator: each scan is read once, at most N held) and reduces the merged scans in parallel.
-/// @p on_frame receives each frame's index, loaded data (nodes moved out) and result.
+/// the same at any thread count (streamFrames). @p on_frame receives each frame's index, loaded data (nodes moved out) and result.
 void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
                     const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame);
 
