@@ -15,5 +15,6 @@ void bindDetector(py::module_& m);       // detector.cpp: LoopDetector, compare_
 void bindIo(py::module_& m);             // io.cpp: KITTI, PCD, node files, poses, calib, sequence folders
 void bindMetrics(py::module_& m);        // metrics.cpp: PR curve, F1max, EP, pose and trajectory errors
 void bindBackend(py::module_& m);        // backend.cpp: the pose-graph optimiser
+void bindRelocalization(py::module_& m);  // relocalization.cpp: the relocalization protocol's metrics
 
 }  // namespace sgtllc::python

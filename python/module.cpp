@@ -51,5 +51,6 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindDetector(m);
   sgtllc::python::bindIo(m);
   sgtllc::python::bindMetrics(m);
+  sgtllc::python::bindRelocalization(m);
   sgtllc::python::bindBackend(m);
 }
