@@ -27,7 +27,9 @@ void bindRelocalization(py::module_& m) {
       .def_readwrite("score", &RelocalizationQuery::score, "reported, not used by the metrics")
       .def_property(
           "T_mapframe_query", [](const RelocalizationQuery& q) { return matrixToArray(q.T_mapframe_query.matrix()); },
-          [](RelocalizationQuery& q, const py::object& T) { q.T_mapframe_query = isometryFromArray(T, "T_mapframe_query"); },
+          [](RelocalizationQuery& q, const py::object& T) {
+            q.T_mapframe_query = isometryFromArray(T, "T_mapframe_query");
+          },
           "(4, 4) maps query points into the returned map frame");
   using eval::RelocalizationProtocol;
   py::class_<RelocalizationProtocol>(m, "RelocalizationProtocol", "The protocol's thresholds.")

@@ -132,7 +132,8 @@ TEST(Relocalization, BadQueriesAreRefusedByNumber) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message({query(2, 0, true, kNone)}), "relocalization query 2: no ground-truth pose (the query sequence has 2)");
+  EXPECT_EQ(message({query(2, 0, true, kNone)}),
+            "relocalization query 2: no ground-truth pose (the query sequence has 2)");
   EXPECT_EQ(message({query(1, 0, true, kNone), query(1, 0, true, kNone)}), "relocalization query 1 appears twice");
   EXPECT_EQ(message({query(0, 1, true, kNone)}), "relocalization query 0: map frame 1 is not in the map (1 frames)");
   EXPECT_EQ(message({query(0, -1, true, kNone)}), "relocalization query 0 is accepted but names no map frame");

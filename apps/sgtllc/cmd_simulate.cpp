@@ -117,7 +117,8 @@ std::shared_ptr<const sim::SimConfig> firstSession(const SimulateOptions& o) {
                 "); pass its first session instead: every session of a world shares that one's frame");
   }
   if (o.scene_given && sim::parseSceneKind(o.scene) != first->scene) {
-    throw Error("--scene " + o.scene + ": " + o.world_of + " was simulated in the " + sim::sceneName(first->scene) + " scene");
+    throw Error("--scene " + o.scene + ": " + o.world_of + " was simulated in the " + sim::sceneName(first->scene) +
+                " scene");
   }
   return first;
 }

@@ -159,10 +159,13 @@ void writeTrajectoryPreview(const std::string& path, const Simulator& sim,
   const bool second = sim.isSecondSession() && n > 0;
   fig.points({second ? lidar_poses[0](0, 3) : 0.0}, {second ? lidar_poses[0](1, 3) : 0.0}, "start", rgb(230, 0, 0),
              6.0);
-  fig.title(std::string("simulated ") + sceneName(sim.config().scene) + (sim.isSecondSession() ? " second session: " : " sequence: ") + std::to_string(n) +
+  fig.title(std::string("simulated ") + sceneName(sim.config().scene) +
+            (sim.isSecondSession() ? " second session: " : " sequence: ") + std::to_string(n) +
             " frames, " + std::to_string(qx.size()) + " loop queries");
-  fig.xlabel("x (m, frame 0)");
-  fig.ylabel("y (m, frame 0)");
+  // A second session's poses are in its first session's frame 0.
+  const std::string frame = sim.isSecondSession() ? "first session's frame 0" : "frame 0";
+  fig.xlabel("x (m, " + frame + ")");
+  fig.ylabel("y (m, " + frame + ")");
   fig.equalAspect();
   fig.legendAt("upper left");
   // Frame the route, not the whole road network.
