@@ -95,6 +95,7 @@ TEST_F(SimSession, KeepsTheStaticWorldAndFrameButNotTheTraffic) {
   EXPECT_EQ(second_->T_world_origin(), first_->poses()[0].T_world_lidar);
   EXPECT_EQ(second_->firstSessionPoses(), worldPoses(*first_));
   EXPECT_TRUE(second_->isSecondSession());
+  EXPECT_EQ(second_->config().plannedRevisits(), 0);
   EXPECT_FALSE(first_->isSecondSession());
   EXPECT_TRUE(first_->firstSessionPoses().empty());
 }

@@ -78,6 +78,7 @@ int SimConfig::scansPerFrame() const {
 }
 
 int SimConfig::plannedRevisits() const {
+  if (world_of) return 0;  // a second session's route plans none (planSecondRoute)
   return revisits >= 0 ? revisits : std::max(1, static_cast<int>(std::lround(frames / 500.0)));
 }
 

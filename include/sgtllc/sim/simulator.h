@@ -37,7 +37,7 @@ struct SimConfig {
   void validate() const;
   /// Raw scans per frame after defaults are applied.
   int scansPerFrame() const;
-  /// Planned revisits after defaults are applied.
+  /// Planned revisits after defaults are applied (0 for a second session, whose route plans none).
   int plannedRevisits() const;
 };
 
