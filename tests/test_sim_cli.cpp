@@ -146,6 +146,11 @@ TEST_F(SimCli, SecondSessionThroughAFirstSessionsWorld) {
     EXPECT_THAT(r.out, HasSubstr(c.message)) << c.args;
     EXPECT_FALSE(fs::exists(path("bad"))) << c.args;
   }
+  // Never into the first session's own folder, not even with --force.
+  r = simulate("--out " + path("s1") + " --frames 5 --no-preview --force --world-of " + path("s1"));
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("is the first session's folder"));
+  EXPECT_EQ(lineCount(path("s1/poses.txt")), 30u);
   // A first session whose poses the rebuilt world does not reproduce (edited, or another simulator version).
   std::ifstream in(path("s1/poses.txt"));
   std::string poses(std::istreambuf_iterator<char>(in), {});

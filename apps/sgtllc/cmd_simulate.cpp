@@ -111,6 +111,10 @@ void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const s
 /// A second session's first session: its manifest, checked against its poses.txt once the world is rebuilt.
 std::shared_ptr<const sim::SimConfig> firstSession(const SimulateOptions& o) {
   if (o.world_of.empty()) return nullptr;
+  std::error_code ec;
+  if (fs::equivalent(o.out, o.world_of, ec)) {
+    throw Error("--out " + o.out + " is the first session's folder: a second session goes into a folder of its own");
+  }
   auto first = std::make_shared<sim::SimConfig>(sim::readManifest(o.world_of));
   if (first->world_of) {
     throw Error(o.world_of + " is itself a second session (of seed " + std::to_string(first->world_of->seed) +
