@@ -52,6 +52,7 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindDetector(m);
   sgtllc::python::bindIo(m);
   sgtllc::python::bindMetrics(m);
+  sgtllc::python::bindRelocalization(m);
   sgtllc::python::bindBackend(m);
   sgtllc::python::bindAccumulate(m);
 }

@@ -361,6 +361,41 @@ def relative_pose_error(ground_truth: ArrayLike, estimate: ArrayLike, delta_fram
 def kitti_segment_error(ground_truth: ArrayLike, estimate: ArrayLike, lengths_m: Sequence[float] = ...,
                         step_frames: int = 10) -> SegmentError: ...
 
+# --- relocalization (relocalization.cpp; docs/relocalization.md) ---
+class RelocalizationQuery:
+    query_number: int
+    map_frame: int
+    accepted: bool
+    score: float
+    T_mapframe_query: np.ndarray
+    def __init__(self, query_number: int, map_frame: int = -1, accepted: bool = False, score: float = 0.0,
+                 T_mapframe_query: Optional[ArrayLike] = None) -> None: ...
+class RelocalizationProtocol:
+    positive_distance: float
+    negative_distance: float
+    max_translation_m: float
+    max_rotation_deg: float
+    def __init__(self) -> None: ...
+class RelocalizationMetrics:
+    queries: int
+    positives: int
+    negatives: int
+    accepted: int
+    accepted_near: int
+    accepted_between: int
+    accepted_far: int
+    accepted_negatives: int
+    pose_successes: int
+    recall_at_1: Optional[float]
+    precision: Optional[float]
+    precision_no_between: Optional[float]
+    pose_success: Optional[float]
+    rte_mean_m: Optional[float]
+    rre_mean_deg: Optional[float]
+    false_rate: Optional[float]
+def relocalization_metrics(queries: Sequence[RelocalizationQuery], map_poses: ArrayLike, query_poses: ArrayLike,
+                           protocol: RelocalizationProtocol = ...) -> RelocalizationMetrics: ...
+
 # --- back end (backend.cpp) ---
 class EdgeKind(Enum):
     ODOMETRY: int; LOOP: int
