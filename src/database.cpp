@@ -37,9 +37,14 @@ FrameDatabase::~FrameDatabase() = default;
 FrameDatabase::FrameDatabase(FrameDatabase&&) noexcept = default;
 FrameDatabase& FrameDatabase::operator=(FrameDatabase&&) noexcept = default;
 
-void FrameDatabase::setMethod(RetrievalMethod method) {
-  impl_->method = method;
+void FrameDatabase::setSearch(const RetrievalConfig& retrieval, int threads) {
+  std::optional<IvfState> kept = ivfState();
+  impl_->method = retrieval.method;
+  impl_->retrieval = retrieval;
+  impl_->threads = threads;
   impl_->kdtree.reset();
+  impl_->ivf.reset();
+  if (kept && retrieval.method == RetrievalMethod::kIvf) impl_->ivfIndex().restore(std::move(*kept));
 }
 
 int FrameDatabase::size() const { return static_cast<int>(impl_->nodes.size()); }

@@ -39,7 +39,7 @@ LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopD
                 " (retrieval.key, histogram_bins or the class set differ)");
   }
   database_ = std::move(database);
-  database_.setMethod(config_.retrieval.method);
+  database_.setSearch(config_.retrieval, config_.threads);
   // The resumed frames have no registration clouds: their loops keep the SVD pose (as frames given as nodes).
   for (int f = 0; f < database_.size(); ++f) clouds_.add(CompactCloud{});
 }

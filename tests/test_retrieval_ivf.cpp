@@ -9,6 +9,7 @@
 
 #include "retrieval/ivf_index.h"
 #include "sgtllc/database.h"
+#include "sgtllc/map/map_format.h"
 #include "sgtllc/node_extraction.h"
 #include "test_places_support.h"
 #include "test_support.h"
@@ -148,6 +149,28 @@ TEST_F(IvfSearch, RefusesAStateThatDoesNotFit) {
   EXPECT_THROW(db.restoreIvf(too_many), std::invalid_argument);
   FrameDatabase exact = fill(RetrievalConfig{}, 1, 10);
   EXPECT_THROW(exact.restoreIvf(good), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(IvfSearch, AMapFileCarriesTheTrainedIndex) {
+  Config config;
+  config.retrieval = ivfConfig(3000);
+  const FrameDatabase db = fill(config.retrieval, 1, 4000);
+  std::vector<std::string> names;
+  for (int f = 0; f < db.size(); ++f) names.push_back(std::to_string(f));
+  const std::string bytes = map::encodeMap(map::makeMap(db, config, names));
+  const map::Map loaded = map::decodeMap(bytes, "ivf.sgtmap", RetrievalMethod::kIvf);
+  ASSERT_TRUE(loaded.database.ivfState().has_value());
+  EXPECT_EQ(loaded.database.ivfState()->centroids, db.ivfState()->centroids);
+  EXPECT_EQ(loaded.database.ivfState()->list_of_frame, db.ivfState()->list_of_frame);
+  for (const auto& q : scene().queries) EXPECT_TRUE(sameHits(loaded.database.query(q, 3999, 15), db.query(q, 3999, 15)));
+  // Searched exactly, the same map has no inverted file, and re-encoding it drops the section.
+  const map::Map exact = map::decodeMap(bytes, "ivf.sgtmap", RetrievalMethod::kBruteForce);
+  EXPECT_FALSE(exact.database.ivfState().has_value());
+  EXPECT_LT(map::encodeMap(exact).size(), bytes.size());
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
+#include "relocalization_eval.h"
 #include "trajectory_metrics.h"
 #include "sgtllc/eval/metric_text.h"
 #include "sgtllc/eval/report.h"
@@ -22,6 +23,7 @@ namespace {
 struct EvalCliOptions {
   std::string sequence, pairs, nodes, report, config;
   std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
+  std::string map;              ///< --map: the relocalization protocol in this map instead
   ClosingOutputs outputs;
   int threads = 0;
   int accumulate = 1;  ///< --accumulate: scans merged into each frame
@@ -287,6 +289,9 @@ void addEvalCommand(CLI::App& app) {
   cmd->add_option("--calib", o->calib, "calib.txt for a KITTI --odometry (default: SEQ_DIR/calib.txt)");
   addAccumulateOption(*cmd, o->accumulate);
   addClosingOutputOptions(*cmd, o->outputs);
+  cmd->add_option("--map", o->map,
+                  "the relocalization protocol instead: relocalize every frame in this map (`sgtllc run --save-map` "
+                  "of an earlier session) and score against both sessions' poses (docs/relocalization.md)");
   cmd->add_flag("--force", o->force, "overwrite an existing report in --report (and existing output files)");
   cmd->callback([o] {
     if (o->odometry.empty() && ((!o->calib.empty() && o->accumulate == 1) || !o->outputs.trajectory.empty() ||
@@ -299,6 +304,14 @@ void addEvalCommand(CLI::App& app) {
     }
     if (o->accumulate > 1 && !o->nodes.empty()) {
       throw CLI::ValidationError("eval", "--accumulate merges scans: give SEQ_DIR without --nodes");
+    }
+    if (!o->map.empty()) {
+      if (!o->pairs.empty() || !o->odometry.empty() || !o->report.empty() || o->accumulate > 1) {
+        throw CLI::ValidationError("eval", "--map runs the relocalization protocol alone: drop --pairs, --odometry, "
+                                           "--report and --accumulate");
+      }
+      evalRelocalization(o->map, o->sequence, o->nodes, loadConfigOption(o->config, o->threads), o->json);
+      return;
     }
     o->command = commandLine();
     runEval(*o);

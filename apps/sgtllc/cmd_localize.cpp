@@ -3,10 +3,10 @@
 #include <charconv>
 #include <iostream>
 #include <memory>
-#include <unordered_map>
 
 #include "commands.h"
 #include "common.h"
+#include "localization.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/map/map_file.h"
 #include "sgtllc/map/relocalizer.h"
@@ -20,19 +20,6 @@ struct LocalizeOptions {
   bool json = false;
   bool force = false;
 };
-
-struct Hit {
-  std::string query, map_frame;  ///< map_frame empty: no candidate passed verification
-  map::Relocalization r;
-};
-
-bool sameNodes(const std::vector<Node>& a, const std::vector<Node>& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t k = 0; k < a.size(); ++k) {
-    if (a[k].label != b[k].label || a[k].centre != b[k].centre) return false;
-  }
-  return true;
-}
 
 /// The shortest text that reads back to @p v (as the project's other CSV writers).
 void appendShortestCsv(std::string& out, double v) {
@@ -95,41 +82,26 @@ std::string hitLine(const Hit& h) {
   return line + (h.r.localized ? "" : "  (below verification.sigma_4: not localized)");
 }
 
-void localizeSequence(const LocalizeOptions& o) {
+void localizeCommand(const LocalizeOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads);
   if (!o.out.empty()) checkWritable(o.out, o.force);
   const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
   const std::string& query_name = o.nodes.empty() ? o.sequence : o.nodes;
   const map::Relocalizer relocalizer(map::readMapFile(o.map, config), config, o.map);
   const map::Map& m = relocalizer.map();
-  std::unordered_map<std::string, int> map_frames;
-  for (int f = 0; f < m.size(); ++f) map_frames.emplace(m.names[static_cast<size_t>(f)], f);
-
-  std::vector<Hit> hits;
   std::vector<double> frame_ms;
   int localized = 0;
   Progress progress("frames", source.size());
-  eval::streamFrames(source, config.threads, [&](size_t index, eval::LoadedFrame& frame) {
-    // A clash: the query frame is the map frame of the same name (same nodes), i.e. the map's own session fed
-    // back; every answer would be that frame itself. Two sessions that both number their frames 000000, … do not
-    // clash.
-    const auto same = map_frames.find(source.name(index));
-    if (same != map_frames.end() && sameNodes(frame.nodes, m.database.nodes(same->second))) {
-      throw Error(query_name + ": frame " + source.name(index) + " is frame " + source.name(index) + " of map " +
-                  o.map + " (same name, same nodes): the query sequence is the map's own session. Localize "
-                  "another session of the same place, or build the map from another one");
-    }
-    Hit& h = hits.emplace_back(Hit{source.name(index), "", relocalizer.localize(std::move(frame.nodes))});
-    h.r.search.timing.extraction_ms = frame.extraction_ms;
-    if (h.r.map_frame >= 0) h.map_frame = m.names[static_cast<size_t>(h.r.map_frame)];
-    localized += h.r.localized;
-    frame_ms.push_back(h.r.search.timing.total_ms());
-    if (!o.json) {
-      progress.clear();
-      std::cout << hitLine(h) << "\n";
-    }
-    progress.update(index + 1, std::to_string(localized) + " localized");
-  });
+  const std::vector<Hit> hits =
+      localizeSequence(source, relocalizer, query_name, o.map, config.threads, [&](size_t index, const Hit& h) {
+        localized += h.r.localized;
+        frame_ms.push_back(h.r.search.timing.total_ms());
+        if (!o.json) {
+          progress.clear();
+          std::cout << hitLine(h) << "\n";
+        }
+        progress.update(index + 1, std::to_string(localized) + " localized");
+      });
   progress.finish();
   if (!o.out.empty()) writeOutput(o.out, hitsCsv(hits), o.force);
 
@@ -183,7 +155,7 @@ void addLocalizeCommand(CLI::App& app) {
     if (o->sequence.empty() == o->nodes.empty()) {
       throw CLI::ValidationError("localize", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
     }
-    localizeSequence(*o);
+    localizeCommand(*o);
   });
 }
 

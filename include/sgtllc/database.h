@@ -50,9 +50,10 @@ class FrameDatabase {
   /// from the first frame's.
   int add(StoredFrame frame);
 
-  /// Switches the search structure (a loaded map is searched as the configuration says); results are unchanged
-  /// up to the ties RetrievalMethod::kKdTree documents.
-  void setMethod(RetrievalMethod method);
+  /// Switches the search structure and its parameters (a loaded map is searched as the configuration says);
+  /// results are unchanged up to the ties RetrievalMethod::kKdTree documents and, for kIvf, the lists a query
+  /// scans. A trained inverted file is kept when the new method is kIvf too (a map file carries it).
+  void setSearch(const RetrievalConfig& retrieval, int threads = 1);
 
   int size() const;
   /// Nodes of frame @p index.

@@ -105,10 +105,14 @@ Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std
   map.config = mapConfig(config);
   map.names = std::move(names);
   map.poses = std::move(poses);
-  map.database = FrameDatabase(config.retrieval.method);
+  map.database = FrameDatabase(config.retrieval, config.threads);
   for (int f = 0; f < database.size(); ++f) {
     const float* key = database.global(f);
     map.database.add(StoredFrame{database.nodes(f), std::vector<float>(key, key + database.globalDimension())});
+  }
+  // A trained inverted file goes into the map as it is, so a loaded map searches as the saved detector did.
+  if (std::optional<IvfState> ivf = database.ivfState(); ivf && config.retrieval.method == RetrievalMethod::kIvf) {
+    map.database.restoreIvf(std::move(*ivf));
   }
   checkFrames(map, "map");
   return map;

@@ -98,6 +98,7 @@ struct Parts {
   std::optional<std::vector<Eigen::Matrix4d>> poses;
   std::optional<std::vector<std::vector<Node>>> nodes;
   std::optional<std::pair<uint32_t, std::vector<float>>> keys;  // dimension, row-major keys
+  std::optional<IvfState> ivf;                                   // a trained inverted file (retrieval.method ivf)
 };
 
 void readConfig(Reader& r, Parts& parts) {
@@ -162,12 +163,36 @@ void readKeys(Reader& r, Parts& parts) {
   parts.keys.emplace(dim, std::move(keys));
 }
 
+void readIvf(Reader& r, Parts& parts) {
+  IvfState s;
+  s.lists = static_cast<int>(r.get<uint32_t>());
+  s.trained_frames = static_cast<int>(r.get<uint32_t>());
+  const uint32_t dim = r.get<uint32_t>();
+  if (s.lists < 1 || s.lists > 65536 || dim == 0 || dim > (1u << 20)) {
+    r.fail("an inverted file of " + std::to_string(s.lists) + " lists of keys of " + std::to_string(dim));
+  }
+  const uint64_t centroid_floats = static_cast<uint64_t>(s.lists) * dim;
+  if (centroid_floats > r.remaining() / sizeof(float)) r.fail("the centroids do not fit in the section");
+  s.centroids.resize(static_cast<size_t>(centroid_floats));
+  for (float& v : s.centroids) {
+    v = r.get<float>();
+    if (!std::isfinite(v)) r.fail("a centroid entry is not finite");
+  }
+  s.list_of_frame.resize(r.count(sizeof(int32_t)));
+  for (int32_t& l : s.list_of_frame) {
+    l = r.get<int32_t>();
+    if (l < 0 || l >= s.lists) r.fail("a frame's list is out of range");
+  }
+  parts.ivf = std::move(s);
+}
+
 struct SectionKind {
   std::string_view tag;
   void (*read)(Reader&, Parts&);
 };
 constexpr SectionKind kSections[] = {
-    {"CONF", readConfig}, {"FRMS", readNames}, {"POSE", readPoses}, {"NODE", readNodes}, {"KEYS", readKeys}};
+    {"CONF", readConfig}, {"FRMS", readNames}, {"POSE", readPoses}, {"NODE", readNodes}, {"KEYS", readKeys},
+    {"IVFS", readIvf}};
 
 }  // namespace
 
@@ -203,6 +228,16 @@ std::string encodeMap(const Map& map, const std::string& source) {
   put<uint32_t>(keys, dim);
   put<uint64_t>(keys, n);
   for (int f = 0; f < db.size(); ++f) keys.append(reinterpret_cast<const char*>(db.global(f)), sizeof(float) * dim);
+  std::string ivf;
+  const std::optional<IvfState> state = db.ivfState();
+  if (state) {
+    put<uint32_t>(ivf, static_cast<uint32_t>(state->lists));
+    put<uint32_t>(ivf, static_cast<uint32_t>(state->trained_frames));
+    put<uint32_t>(ivf, dim);
+    ivf.append(reinterpret_cast<const char*>(state->centroids.data()), sizeof(float) * state->centroids.size());
+    put<uint64_t>(ivf, state->list_of_frame.size());
+    for (int32_t l : state->list_of_frame) put<int32_t>(ivf, l);
+  }
 
   std::string body;
   body.reserve(conf.size() + names.size() + poses.size() + nodes.size() + keys.size() + 5 * 20);
@@ -211,10 +246,11 @@ std::string encodeMap(const Map& map, const std::string& source) {
   if (map.hasPoses()) putSection(body, "POSE", poses);
   putSection(body, "NODE", nodes);
   putSection(body, "KEYS", keys);
+  if (state) putSection(body, "IVFS", ivf);
 
   std::string out(kMagic);
   put<uint32_t>(out, kFormatVersion);
-  put<uint32_t>(out, map.hasPoses() ? 5 : 4);
+  put<uint32_t>(out, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0));
   put<uint64_t>(out, kHeaderBytes + body.size());
   put<uint64_t>(out, fingerprint(map.config));
   put<uint32_t>(out, 0);  // flags: none in version 1
@@ -310,10 +346,24 @@ Map decodeMap(std::string_view bytes, const std::string& source, RetrievalMethod
   map.config = std::move(*parts.config);
   map.names = std::move(*parts.names);
   if (parts.poses) map.poses = std::move(*parts.poses);
-  map.database = FrameDatabase(method);
+  RetrievalConfig search;
+  search.method = parts.ivf ? RetrievalMethod::kIvf : method;
+  map.database = FrameDatabase(search);
   for (size_t f = 0; f < n; ++f) {
     map.database.add(StoredFrame{std::move((*parts.nodes)[f]),
                                  std::vector<float>(keys.begin() + f * dim, keys.begin() + (f + 1) * dim)});
+  }
+  try {
+    if (parts.ivf) {
+      if (parts.ivf->centroids.size() != static_cast<size_t>(parts.ivf->lists) * dim) {
+        fail(MapProblem::kCorrupted, "corrupted map: the inverted file's centroids are not as long as the keys");
+      }
+      map.database.restoreIvf(std::move(*parts.ivf));
+      search.method = method;
+      map.database.setSearch(search);  // the state stays when method is ivf; it is dropped otherwise
+    }
+  } catch (const std::invalid_argument& e) {
+    fail(MapProblem::kCorrupted, std::string("corrupted map: ") + e.what());
   }
   try {
     checkFrames(map, source);

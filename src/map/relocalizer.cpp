@@ -3,6 +3,8 @@
 #include <chrono>
 #include <utility>
 
+#include <Eigen/LU>
+
 #include "sgtllc/frame.h"
 #include "sgtllc/retrieval/retrieval_key.h"
 
@@ -21,7 +23,7 @@ Relocalizer::Relocalizer(Map map, const Config& config, const std::string& sourc
       config_(validated(config)),
       extractor_(config.cluster, config.labels, config.graph.max_nodes, config.threads) {
   checkCompatible(map_, config_, source);
-  map_.database.setMethod(config_.retrieval.method);
+  map_.database.setSearch(config_.retrieval, config_.threads);
 }
 
 Relocalization Relocalizer::localize(const LabeledCloud& cloud) const {
@@ -52,7 +54,20 @@ Relocalization Relocalizer::localize(std::vector<Node> nodes) const {
   r.localized = r.search.is_loop;
   r.score = best.match.score_t;
   r.T_mapframe_query = best.match.T_match_query;
-  if (map_.hasPoses()) r.T_world_query = map_.poses[static_cast<size_t>(best.frame)] * r.T_mapframe_query;
+  if (!map_.hasPoses()) return r;
+  r.T_world_query = map_.poses[static_cast<size_t>(best.frame)] * r.T_mapframe_query;
+  // The verified frame may be a neighbour of the place along the old pass or across the street (the top-1 choice
+  // is among near-equal scores); with poses, the answer is the map frame nearest to where the query is estimated
+  // to be, ties to the lower frame.
+  const Eigen::Vector3d at = r.T_world_query->topRightCorner<3, 1>();
+  int nearest = best.frame;
+  double nearest_d2 = (map_.poses[static_cast<size_t>(nearest)].topRightCorner<3, 1>() - at).squaredNorm();
+  for (int f = 0; f < map_.size(); ++f) {
+    const double d2 = (map_.poses[static_cast<size_t>(f)].topRightCorner<3, 1>() - at).squaredNorm();
+    if (d2 < nearest_d2 || (d2 == nearest_d2 && f < nearest)) nearest = f, nearest_d2 = d2;
+  }
+  r.map_frame = nearest;
+  r.T_mapframe_query = map_.poses[static_cast<size_t>(nearest)].inverse() * *r.T_world_query;
   return r;
 }
 

@@ -105,10 +105,16 @@ void IvfIndex::knn(const float* query, int last, int k, int probe, std::vector<s
   const size_t scan = std::min(centres.size(), static_cast<size_t>(probe));
   std::partial_sort(centres.begin(), centres.begin() + scan, centres.end(), closer);
   std::vector<std::pair<int, float>> hits;
+  const size_t row_bytes = static_cast<size_t>(dim_) * sizeof(float);
   for (size_t c = 0; c < scan; ++c) {
-    for (int32_t f : lists_[centres[c].first]) {
-      if (f > last) break;  // lists are ascending
-      hits.emplace_back(f, squaredDistance(rows_->data() + static_cast<size_t>(f) * dim_, query, dim_));
+    const std::vector<int32_t>& list = lists_[centres[c].first];
+    for (size_t i = 0; i < list.size() && list[i] <= last; ++i) {  // lists are ascending
+      // A list's frames lie far apart in the key matrix: fetch the next one's key while this one is compared.
+      if (i + 1 < list.size()) {
+        const char* next = reinterpret_cast<const char*>(rows_->data() + static_cast<size_t>(list[i + 1]) * dim_);
+        for (size_t b = 0; b < row_bytes; b += 64) __builtin_prefetch(next + b);
+      }
+      hits.emplace_back(list[i], squaredDistance(rows_->data() + static_cast<size_t>(list[i]) * dim_, query, dim_));
     }
   }
   const size_t keep = std::min(hits.size(), static_cast<size_t>(k));

@@ -20,10 +20,14 @@ struct Relocalization {
   /// (searchDatabase): candidates, best, is_loop (= localized), lateral and times. `frame` is −1 and `search`
   /// kSearched: nothing is stored.
   FrameResult search;
-  int map_frame = -1;  ///< map frame of the best verified candidate, or −1 if no candidate passed verification
+  /// The answer's map frame, or −1 if no candidate passed verification: with map poses, the map frame nearest to
+  /// the query's estimated position T_world_query (the verified candidate, search.candidates[search.best], may be
+  /// a neighbour of the place); without, the verified candidate itself.
+  int map_frame = -1;
   bool localized = false;  ///< the best candidate is a loop (score_t > verification.sigma_4)
   double score = 0.0;      ///< score_t of the best candidate (0 if none)
-  /// Maps query points into map frame @p map_frame (identity if none).
+  /// Maps query points into map frame @p map_frame (identity if none): with map poses,
+  /// T_world_mapframe⁻¹ · T_world_query.
   Eigen::Matrix4d T_mapframe_query = Eigen::Matrix4d::Identity();
   /// The query's pose in the map's world frame, T_world_mapframe · T_mapframe_query, when the map has poses and a
   /// candidate was chosen.
