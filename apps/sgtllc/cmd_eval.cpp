@@ -18,6 +18,7 @@ namespace {
 
 struct EvalCliOptions {
   std::string sequence, pairs, nodes, report, config;
+  std::string labeller, labels_dir;  ///< --labeller, --labels-dir (as `sgtllc run`)
   std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
   ClosingOutputs outputs;
   int threads = 0;
@@ -154,14 +155,14 @@ struct FolderPairs {
 };
 
 void runEval(const EvalCliOptions& o) {
-  const Config config = loadConfigOption(o.config, o.threads);
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   checkReportFolder(o);
   EvalClosing back;
   if (!o.odometry.empty()) {
     if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
     checkClosingOutputs(o.outputs, o.force);
   }
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   eval::EvalOptions options;
   options.threads = config.threads;
   Progress progress("frames", source.size());
@@ -257,6 +258,9 @@ void addEvalCommand(CLI::App& app) {
   cmd->add_option("--nodes", o->nodes, "read frames from node files NAME.txt (x y z label rows) in this folder");
   cmd->add_option("--report", o->report, "write report.md, metrics.json, CSV tables and PNG plots to this folder");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
+  addLabellerOption(cmd, &o->labeller);
+  cmd->add_option("--labels-dir", o->labels_dir,
+                  "read DIR/NNNNNN.label (e.g. a segmentation network's predictions) instead of SEQ_DIR/labels");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the metrics as one JSON object");

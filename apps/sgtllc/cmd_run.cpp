@@ -18,6 +18,8 @@ struct RunOptions {
   std::string nodes;
   std::string out;
   std::string config;
+  std::string labeller;    ///< --labeller file|geometric
+  std::string labels_dir;  ///< --labels-dir: NAME.label files instead of SEQ_DIR/labels
   std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
   ClosingOutputs outputs;
   int threads = 0;
@@ -46,11 +48,11 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
 }
 
 void runSequence(const RunOptions& o) {
-  const Config config = loadConfigOption(o.config, o.threads);
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
     odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
@@ -156,6 +158,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
+  addLabellerOption(cmd, &o->labeller);
+  cmd->add_option("--labels-dir", o->labels_dir,
+                  "read DIR/NNNNNN.label (e.g. a segmentation network's predictions) instead of SEQ_DIR/labels");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and the loops as one JSON object");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "sgtllc/config.h"
@@ -27,11 +28,17 @@ inline constexpr int kExitUsage = 2;
 std::string& commandLine();
 
 /// Configuration from --config (or the defaults), with --threads applied if given (> 0) to the detector's
-/// `threads` and the back end's `backend.solver.num_threads`.
-Config loadConfigOption(const std::string& path, int threads);
+/// `threads` and the back end's `backend.solver.num_threads`, and --labeller (file | geometric; "" = the
+/// config's labeller.source).
+Config loadConfigOption(const std::string& path, int threads, const std::string& labeller = "");
 
-/// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels.
-eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config);
+/// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels
+/// (from @p labels_dir if given: --labels-dir; none with labeller.source geometric).
+eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
+                              const std::string& labels_dir = "");
+
+/// Adds `--labeller file|geometric` to @p cmd.
+void addLabellerOption(CLI::App* cmd, std::string* labeller);
 
 /// One input frame reduced to graph nodes.
 struct FrameNodes {

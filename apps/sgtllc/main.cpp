@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "sgtllc 0.1.0");
   sgtllc::cli::addPairCommand(app);
+  sgtllc::cli::addLabelCommand(app);
   sgtllc::cli::addRunCommand(app);
   sgtllc::cli::addOptimizeCommand(app);
   sgtllc::cli::addEvalCommand(app);
