@@ -21,6 +21,9 @@ namespace {
 constexpr double kWallPlanarity = 0.5;
 constexpr double kWallNormalVerticality = 0.35;
 constexpr double kScattered = 0.15;
+/// How far above the pole slice (m) the points around a pole axis still count as pole: the trunk's top below
+/// the crown, not the crown.
+constexpr double kPoleAboveSlice = 0.5;
 
 struct SegmentSummary {
   Moments moments;
@@ -61,17 +64,16 @@ int8_t classOf(const SegmentSummary& s, const SegmentRuleConfig& r) {
     return kFence;
   }
   if (scatter_share >= r.min_scatter_share) return kVegetation;
-  const ShapeFeatures f = shapeFeatures(cov);
-  if (s.bottom >= 1.0f && length <= 1.5 && height <= 1.5 && f.planarity >= 0.5 && f.normal_verticality <= 0.35) {
-    return kTrafficSign;  // a small vertical plane held up in the air: a sign whose pole was not connected
-  }
+  // No traffic-sign rule: small planes held up in the air were mostly parts of crowns and façades that change
+  // with the viewpoint, and their nodes did not come back at a revisit (docs/labeller.md §4).
   return kDropped;
 }
 
 /// Poles and trunks inside larger segments (a trunk under its crown, a pole touching a hedge): the points of a
 /// horizontal slice of the scene, pole_slice_low..pole_slice_high above the ground, are segmented on their own;
 /// a slice component that is thin (4 std devs ≤ pole_max_width) and spans pole_min_span of height is a pole
-/// section, and every non-ground point within pole_radius of its axis, up to 1 m above the slice, becomes kPole.
+/// section, and every point of its segment within pole_radius of its axis, up to kPoleAboveSlice above the slice,
+/// becomes kPole.
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole
 /// landmarks extracted from 3-D lidar scans", ECMR 2019 (docs/labeller.md §4).
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
@@ -115,7 +117,7 @@ void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<flo
   std::vector<std::vector<int>> segment_axes(static_cast<size_t>(out->segments));
   for (size_t a = 0; a < axes.size(); ++a) segment_axes[axes[a].segment].push_back(static_cast<int>(a));
   const double r2 = r.pole_radius * r.pole_radius;
-  const float top = static_cast<float>(r.pole_slice_high + 1.0);
+  const float top = static_cast<float>(r.pole_slice_high + kPoleAboveSlice);
   for (size_t i = 0; i < n; ++i) {
     const int s = out->segment[i];
     if (s < 0 || segment_axes[s].empty() || height[i] > top) continue;

@@ -5,7 +5,8 @@
 /// Loop closing needs classes that come out the same on every visit more than correct semantics, so the rules
 /// use only what a second visit from another viewpoint sees alike: a segment's extent, height above the ground
 /// and the share of its voxels that are vertical planes or scattered. Trunk and pole are one class here
-/// (kPole): thin vertical segments look the same whatever they are; kTrunk is never given.
+/// (kPole): thin vertical segments look the same whatever they are; kTrunk is never given. Terrain and
+/// traffic-sign are not given either (docs/labeller.md §4, "Merged and missing classes").
 #pragma once
 
 #include <cstdint>
@@ -21,7 +22,7 @@ namespace sgtllc::label {
 
 /// Output of GeometricLabeller::classify for one scan.
 struct Labelling {
-  /// Stable class per point (SemanticClass 0..6, never kTrunk) or kDropped (−1): ground that is not terrain,
+  /// Stable class per point (building, fence, vegetation or pole) or kDropped (−1): ground,
   /// segments no rule claims (cars, people, clutter), non-finite points.
   std::vector<int8_t> classes;
   std::vector<uint8_t> ground;  ///< 1 = the point is ground (ground.h)
