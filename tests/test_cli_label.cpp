@@ -123,5 +123,31 @@ TEST_F(CliLabel, LabelsDirNamesTheMissingFrameAndRejectsWrongLengths) {
   EXPECT_NE(r.out.find("exclude each other"), std::string::npos) << r.out;
 }
 
+TEST_F(CliLabel, UnknownLabelIdsGiveOneWarningPerRun) {
+  namespace fs = std::filesystem;
+  const std::string seq = scanOnlySequence();
+  const fs::path preds = dir_ / "predictions";
+  fs::create_directories(preds);
+  const char* frames[] = {"000052", "000088", "000850", "004501"};
+  size_t unknown = 0;
+  for (int i = 0; i < 4; ++i) {
+    std::vector<uint32_t> ids = io::readLabelFile(kData + "/kitti/00/labels/" + frames[i] + ".label");
+    for (size_t k = 0; k < ids.size(); k += 100) {
+      ids[k] = 12345;  // not a SemanticKITTI id
+      ++unknown;
+    }
+    std::ofstream(preds / ("00000" + std::to_string(i) + ".label"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(ids.data()), static_cast<std::streamsize>(ids.size() * 4));
+  }
+  const CliRun r = run("run " + seq + " --labels-dir " + preds.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  size_t count = 0;
+  for (size_t at = r.out.find("whose label id"); at != std::string::npos; at = r.out.find("whose label id", at + 1)) {
+    ++count;
+  }
+  EXPECT_EQ(count, 1u) << r.out;
+  EXPECT_NE(r.out.find("ignored " + std::to_string(unknown) + " points in 4 of 4 frames"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace sgtllc::test

@@ -181,6 +181,13 @@ void runEval(const EvalCliOptions& o) {
     };
   }
 
+  UnknownLabels unknown;  // one warning per run, not one per frame
+  options.on_frame = [&unknown, &source, chained = options.on_frame](size_t i, const FrameResult& r,
+                                                                     const LoopDetector& detector) {
+    unknown.add(source.name(i), r.extraction.unknown_label_points);
+    if (chained) chained(i, r, detector);
+  };
+
   if (!o.pairs.empty()) {
     const auto pairs = eval::readPairList(o.pairs);
     const eval::GroundTruth truth = loadTruth(o.sequence, false);
@@ -199,6 +206,7 @@ void runEval(const EvalCliOptions& o) {
     FolderPairs folder_pairs(o, options);
     const eval::SequenceRun run = eval::runSequenceEvaluation(source, truth, config, options);
     progress.finish();
+    unknown.warn();
     const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
     folder_pairs.finish(run, truth, config, options, extra);
     if (back.odometry) {

@@ -68,13 +68,16 @@ void runSequence(const RunOptions& o) {
   std::vector<ClosingLoop> edges;
   std::vector<double> frame_ms, load_ms;
   Progress progress("frames", source.size());
+  UnknownLabels unknown;
   eval::streamSequence(source, detector, config.threads,
                        [&](size_t index, const eval::LoadedFrame& loaded, const FrameResult& r) {
     frame_ms.push_back(r.timing.total_ms());
     load_ms.push_back(loaded.load_ms);
-    const ExtractionStats& stats = loaded.stats;
-    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0 ||
-        stats.capped_nodes > 0) {
+    // Unknown label ids (a network's label space, a wrong labels.preset) are summed into one warning at the end.
+    ExtractionStats stats = loaded.stats;
+    unknown.add(source.name(index), stats.unknown_label_points);
+    stats.unknown_label_points = 0;
+    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.capped_nodes > 0) {
       progress.clear();
       warnAboutInput(source.name(index), stats, r.num_nodes);
     }
@@ -100,6 +103,7 @@ void runSequence(const RunOptions& o) {
     progress.update(index + 1, std::to_string(loops.size()) + " loops");
   });
   progress.finish();
+  unknown.warn();
   std::unique_ptr<Closing> closing;
   if (odometry) {
     closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));

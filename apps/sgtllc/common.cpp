@@ -143,6 +143,19 @@ void warnAboutInput(const std::string& name, const ExtractionStats& stats, int n
   }
 }
 
+void UnknownLabels::add(const std::string& frame, size_t points) {
+  ++seen_;
+  if (points == 0) return;
+  if (frames_++ == 0) first_ = frame;
+  points_ += points;
+}
+
+void UnknownLabels::warn() const {
+  if (points_ == 0) return;
+  std::cerr << "warning: ignored " << points_ << " points in " << frames_ << " of " << seen_ << " frames (first: "
+            << first_ << ") whose label id is not in the configured label set (labels.preset)\n";
+}
+
 Json matrixJson(const Eigen::Matrix4d& T) {
   Json rows = Json::array();
   for (int r = 0; r < 4; ++r) {

@@ -73,6 +73,19 @@ void writeOutput(const std::string& path, const std::string& text, bool force);
 void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes,
                     const char* unit = "points");
 
+/// Points with label ids outside the configured label set, summed over a run: one warning at the end instead of
+/// one line per frame.
+class UnknownLabels {
+ public:
+  void add(const std::string& frame, size_t points);
+  /// "warning: ignored N points in F of T frames (first: NAME) whose label id ..." on stderr, if any.
+  void warn() const;
+
+ private:
+  size_t points_ = 0, frames_ = 0, seen_ = 0;
+  std::string first_;
+};
+
 Json matrixJson(const Eigen::Matrix4d& T);
 std::string matrixText(const Eigen::Matrix4d& T, const std::string& indent);
 /// Indented JSON text; bytes that are not UTF-8 (from file names) are replaced, never an error.
