@@ -1,4 +1,5 @@
 // Ranges of the labeller settings (label/labeller_config.h), in the style of Config::validate().
+#include <cmath>
 #include <string>
 
 #include "config_ranges.h"
@@ -21,9 +22,11 @@ void validateLabellerConfig(const LabellerConfig& l, const LabelConfig& labels) 
   checkReal("labeller.ground.max_slope", g.max_slope, {0.0}, {10.0});
   checkReal("labeller.ground.max_climb", g.max_climb, {0.0}, {10.0});
   checkReal("labeller.ground.tolerance", g.tolerance, {0.0, false}, {10.0});
-  if (g.max_range / g.bin > 100000.0) {
-    throw ConfigError("labeller.ground.bin", "labeller.ground.max_range / labeller.ground.bin = " +
-                                                 text(g.max_range / g.bin) + " bins is more than 100000");
+  // The grid holds 12 bytes per cell: at most 4 million cells (48 MB).
+  const double cells = g.sectors * std::ceil(g.max_range / g.bin);
+  if (cells > 4.0e6) {
+    throw ConfigError("labeller.ground.bin", "labeller.ground.sectors * max_range / bin = " + text(cells) +
+                                                 " ground cells is more than 4000000");
   }
   const SegmentRuleConfig& s = l.segments;
   checkReal("labeller.segments.voxel", s.voxel, {0.05}, {10.0});

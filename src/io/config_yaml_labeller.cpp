@@ -36,29 +36,29 @@ void addLabellerFields(const BackendFieldMakers& add) {
   rule_integer("min_points", "smaller segments are dropped", [](S& s) -> int& { return s.min_points; });
   rule_integer("min_voxel_points", "a voxel's own shape counts from this many points",
                [](S& s) -> int& { return s.min_voxel_points; });
-  rule_number("pole_max_width", "pole: horizontal extent at most (m)", [](S& s) -> double& { return s.pole_max_width; });
-  rule_number("pole_min_height", "pole: vertical extent at least (m)", [](S& s) -> double& { return s.pole_min_height; });
-  rule_number("pole_slice_low", "pole slice: from this height above the ground (m)",
+  rule_number("pole_max_width", "a pole segment is at most this wide (m)", [](S& s) -> double& { return s.pole_max_width; });
+  rule_number("pole_min_height", "... and at least this tall (m)", [](S& s) -> double& { return s.pole_min_height; });
+  rule_number("pole_slice_low", "the pole slice starts this high above the ground (m)",
               [](S& s) -> double& { return s.pole_slice_low; });
-  rule_number("pole_slice_high", "pole slice: up to this height (m)", [](S& s) -> double& { return s.pole_slice_high; });
-  rule_number("pole_min_span", "pole slice: a thin component spanning this height is a pole section (m)",
+  rule_number("pole_slice_high", "... and ends this high (m)", [](S& s) -> double& { return s.pole_slice_high; });
+  rule_number("pole_min_span", "a thin slice component spanning this height is a pole section (m)",
               [](S& s) -> double& { return s.pole_min_span; });
-  rule_number("pole_voxel", "pole slice: voxel leaf (m)", [](S& s) -> double& { return s.pole_voxel; });
-  rule_number("pole_radius", "pole slice: points this close to a thin component's axis are pole (m)",
+  rule_number("pole_voxel", "voxel leaf of the pole slice (m)", [](S& s) -> double& { return s.pole_voxel; });
+  rule_number("pole_radius", "points this close to a pole axis in the slice are pole (m)",
               [](S& s) -> double& { return s.pole_radius; });
-  rule_number("building_min_top", "building: reaches at least this high above the ground (m)",
+  rule_number("building_min_top", "a tall segment reaches this high above the ground (m)",
               [](S& s) -> double& { return s.building_min_top; });
-  rule_number("building_min_length", "building: horizontal length at least (m)",
+  rule_number("building_min_length", "a building is at least this long (m)",
               [](S& s) -> double& { return s.building_min_length; });
-  rule_number("fence_max_top", "fence: ends below this height above the ground (m)",
+  rule_number("fence_max_top", "a fence ends below this height above the ground (m)",
               [](S& s) -> double& { return s.fence_max_top; });
-  rule_number("fence_min_length", "fence: length at least (m)", [](S& s) -> double& { return s.fence_min_length; });
-  rule_number("fence_max_width", "fence: thickness at most (m)", [](S& s) -> double& { return s.fence_max_width; });
-  rule_number("min_wall_share", "building: share of shaped voxels that are vertical planes (a tall segment with fewer is vegetation)",
+  rule_number("fence_min_length", "... is at least this long (m)", [](S& s) -> double& { return s.fence_min_length; });
+  rule_number("fence_max_width", "... and at most this thick (m)", [](S& s) -> double& { return s.fence_max_width; });
+  rule_number("min_wall_share", "share of vertical-plane voxels a building needs (a tall segment with fewer is vegetation)",
               [](S& s) -> double& { return s.min_wall_share; });
-  rule_number("min_fence_wall_share", "fence: share of shaped voxels that are vertical planes",
+  rule_number("min_fence_wall_share", "share of vertical-plane voxels a fence needs",
               [](S& s) -> double& { return s.min_fence_wall_share; });
-  rule_number("min_scatter_share", "vegetation: share of shaped voxels that are scattered",
+  rule_number("min_scatter_share", "share of scattered voxels that makes a segment vegetation",
               [](S& s) -> double& { return s.min_scatter_share; });
 }
 
