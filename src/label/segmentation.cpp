@@ -19,44 +19,59 @@ uint64_t packKey(int64_t x, int64_t y, int64_t z) {
          static_cast<uint64_t>(z + kOffset);
 }
 
-/// Voxel key → voxel index; keys are never removed.
+/// Voxel key → voxel index; keys are never removed. Key and value share a slot (one cache line per probe), and
+/// the table doubles whenever it is half full, so it stays about the size of the occupied voxels (a few per
+/// hundred points), not of the points.
 class VoxelHash {
  public:
-  explicit VoxelHash(size_t expected) {
-    size_t cap = 16;
-    shift_ = 60;
-    while (cap < 2 * expected) {
-      cap *= 2;
-      --shift_;
-    }
-    keys_.assign(cap, kEmpty);
-    values_.assign(cap, -1);
-    mask_ = cap - 1;
-  }
+  explicit VoxelHash(size_t expected) { resize(std::max<size_t>(16, expected)); }
   /// Index of @p key, inserting it as @p next if absent.
   int insert(uint64_t key, int next) {
-    size_t slot = hash(key);
-    while (keys_[slot] != kEmpty && keys_[slot] != key) slot = (slot + 1) & mask_;
-    if (keys_[slot] == kEmpty) {
-      keys_[slot] = key;
-      values_[slot] = next;
+    Slot* slot = probe(key);
+    if (slot->key == kEmpty) {
+      slot->key = key;
+      slot->value = next;
+      if (++size_ * 2 > slots_.size()) resize(slots_.size() * 2);
+      return next;
     }
-    return values_[slot];
+    return slot->value;
   }
   int find(uint64_t key) const {
-    size_t slot = hash(key);
-    while (keys_[slot] != kEmpty) {
-      if (keys_[slot] == key) return values_[slot];
-      slot = (slot + 1) & mask_;
+    for (size_t i = hash(key);; i = (i + 1) & mask_) {
+      if (slots_[i].key == key) return slots_[i].value;
+      if (slots_[i].key == kEmpty) return -1;
     }
-    return -1;
   }
 
  private:
+  struct Slot {
+    uint64_t key = kEmpty;
+    int value = -1;
+  };
   // Fibonacci hashing: the top bits of the product mix every bit of the key.
   size_t hash(uint64_t key) const { return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_); }
-  std::vector<uint64_t> keys_;
-  std::vector<int> values_;
+  Slot* probe(uint64_t key) {
+    size_t i = hash(key);
+    while (slots_[i].key != kEmpty && slots_[i].key != key) i = (i + 1) & mask_;
+    return &slots_[i];
+  }
+  void resize(size_t at_least) {
+    size_t cap = 16;
+    int bits = 4;
+    while (cap < at_least) {
+      cap *= 2;
+      ++bits;
+    }
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(cap, Slot{});
+    mask_ = cap - 1;
+    shift_ = 64 - bits;
+    for (const Slot& s : old) {
+      if (s.key != kEmpty) *probe(s.key) = s;
+    }
+  }
+  std::vector<Slot> slots_;
+  size_t size_ = 0;
   size_t mask_ = 0;
   int shift_ = 60;
 };
@@ -78,7 +93,9 @@ Segmentation segmentVoxels(const std::vector<Eigen::Vector3f>& points, const std
   const double inv = 1.0 / voxel;
   size_t used = 0;
   for (size_t i = 0; i < n; ++i) used += use[i] != 0;
-  VoxelHash hash(used);
+  VoxelHash hash(used / 8);
+  uint64_t last_key = kEmpty;  // consecutive points of a scan line mostly share a voxel
+  int last_voxel = -1;
   std::vector<uint64_t> voxel_keys;
   std::vector<std::array<int64_t, 3>> cells;
   for (size_t i = 0; i < n; ++i) {
@@ -87,9 +104,13 @@ Segmentation segmentVoxels(const std::vector<Eigen::Vector3f>& points, const std
     const std::array<int64_t, 3> c = {static_cast<int64_t>(std::floor(p.x() * inv)),
                                       static_cast<int64_t>(std::floor(p.y() * inv)),
                                       static_cast<int64_t>(std::floor(p.z() * inv))};
-    const int v = hash.insert(packKey(c[0], c[1], c[2]), static_cast<int>(cells.size()));
-    if (v == static_cast<int>(cells.size())) cells.push_back(c);
-    s.point_voxel[i] = v;
+    const uint64_t key = packKey(c[0], c[1], c[2]);
+    if (key != last_key) {
+      last_key = key;
+      last_voxel = hash.insert(key, static_cast<int>(cells.size()));
+      if (last_voxel == static_cast<int>(cells.size())) cells.push_back(c);
+    }
+    s.point_voxel[i] = last_voxel;
   }
   s.num_voxels = static_cast<int>(cells.size());
   std::vector<int> parent(cells.size());
