@@ -17,8 +17,8 @@ struct GroundConfig {
   int sectors = 120;            ///< angular sectors around the sensor [8, 1440]
   double bin = 0.5;             ///< range bin length (m) [0.05, 10]
   double max_range = 100.0;     ///< points farther (horizontally, m) are not ground-tested (0, 1000]
-  /// The ground height below the sensor is the 30th percentile of the lowest points of the bins min_range..20 m
-  /// away; with fewer than 8 such bins the scan has no ground.
+  /// The ground height below the sensor is a plane fitted to the lowest points of the bins min_range..20 m away;
+  /// with fewer than 8 such bins the scan has no ground.
   double min_range = 3.0;       ///< nearer points (horizontally, m) do not estimate the ground height [0, 20)
   /// A bin's lowest point continues its sector's ground line iff it is within step + max_slope · Δr (m) of the last
   /// ground bin Δr metres nearer [0, 10].
@@ -55,7 +55,7 @@ struct SegmentRuleConfig {
   /// is vegetation [0, 1].
   double min_wall_share = 0.25;
   double min_fence_wall_share = 0.35;  ///< the same share for a fence [0, 1]
-  /// Share of a segment's shaped voxels that are scattered (PCA scattering > 0.15, algorithm of docs/labeller.md)
+  /// Share of a segment's shaped voxels that are scattered (scattering λ3/λ1 ≥ 0.15, docs/labeller.md §3)
   /// above which it is vegetation [0, 1].
   double min_scatter_share = 0.3;
 };
