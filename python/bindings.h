@@ -3,6 +3,10 @@
 
 #include <pybind11/pybind11.h>
 
+namespace sgtllc::map {
+struct Map;
+}  // namespace sgtllc::map
+
 namespace sgtllc::python {
 
 namespace py = pybind11;
@@ -16,5 +20,11 @@ void bindDetector(py::module_& m);       // detector.cpp: LoopDetector, compare_
 void bindIo(py::module_& m);             // io.cpp: KITTI, PCD, node files, poses, calib, sequence folders
 void bindMetrics(py::module_& m);        // metrics.cpp: PR curve, F1max, EP, pose and trajectory errors
 void bindBackend(py::module_& m);        // backend.cpp: the pose-graph optimiser
+void bindAccumulate(py::module_& m);     // accumulate.cpp: ScanAccumulator (scan accumulation)
+void bindMap(py::module_& m);            // map.cpp: Map, load_map, Relocalizer
+
+/// A copy of @p m (the C++ Map is move-only; Python objects share theirs).
+map::Map copyMap(const map::Map& m);
+void bindRelocalization(py::module_& m);  // relocalization.cpp: the relocalization protocol's metrics
 
 }  // namespace sgtllc::python

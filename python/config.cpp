@@ -33,7 +33,8 @@ void enums(py::module_& m) {
       .value("LENGTHS", SubVectorKind::kLengths, "lengths of the opposite sides");
   py::enum_<RetrievalMethod>(m, "RetrievalMethod", "Nearest-neighbour search (retrieval.method).")
       .value("BRUTE_FORCE", RetrievalMethod::kBruteForce, "exact linear scan (default)")
-      .value("KD_TREE", RetrievalMethod::kKdTree, "exact kd-tree search");
+      .value("KD_TREE", RetrievalMethod::kKdTree, "exact kd-tree search")
+      .value("IVF", RetrievalMethod::kIvf, "inverted file for large maps (approximate; needs FAISS)");
   py::enum_<RetrievalKey>(m, "RetrievalKey", "The stored, searched key (retrieval.key).")
       .value("DISTANCE_HISTOGRAM", RetrievalKey::kDistanceHistogram,
              "per class-pair histogram of node-centre distances (default)")
@@ -103,7 +104,10 @@ void sections(py::module_& m) {
       .def_readwrite("method", &RetrievalConfig::method, "search structure")
       .def_readwrite("key", &RetrievalConfig::key, "the stored, searched key")
       .def_readwrite("histogram_bins", &RetrievalConfig::histogram_bins, "bins per class pair of the distance histogram")
-      .def_readwrite("histogram_range", &RetrievalConfig::histogram_range, "distances binned by the histogram (m)");
+      .def_readwrite("histogram_range", &RetrievalConfig::histogram_range, "distances binned by the histogram (m)")
+      .def_readwrite("ivf_lists", &RetrievalConfig::ivf_lists, "inverted-file lists (0: 2 sqrt(N) at training)")
+      .def_readwrite("ivf_probe", &RetrievalConfig::ivf_probe, "inverted-file lists scanned per query")
+      .def_readwrite("ivf_train_frames", &RetrievalConfig::ivf_train_frames, "frames before the inverted file trains");
 
   py::class_<AssociationConfig>(m, "AssociationConfig", "Node association (association.*).")
       .def(py::init<>())

@@ -2,6 +2,8 @@
 // with the GIL held; the library call itself runs with the GIL released, so other Python threads keep running.
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string>
 
 #include <pybind11/stl.h>
 
@@ -9,6 +11,7 @@
 #include "bindings.h"
 #include "opaque.h"
 #include "sgtllc/detector.h"
+#include "sgtllc/map/map.h"
 
 namespace sgtllc::python {
 namespace {
@@ -17,6 +20,7 @@ namespace {
 /// each call holds the detector's own lock.
 struct PyLoopDetector {
   explicit PyLoopDetector(const Config& config) : detector(config) {}
+  PyLoopDetector(const Config& config, FrameDatabase database) : detector(config, std::move(database)) {}
   LoopDetector detector;
   std::mutex mutex;
 };
@@ -34,6 +38,13 @@ void bindDetector(py::module_& m) {
                              "least retrieval.exclude_recent older, verified and then stored.")
       .def(py::init<const Config&>(), py::arg("config") = Config{},
            "Raises ConfigError if the configuration is invalid. The detector keeps a copy of it.")
+      .def(py::init([](const map::Map& saved, const Config& config) {
+             map::checkCompatible(saved, config, "map");
+             return std::make_unique<PyLoopDetector>(config, copyMap(saved).database);
+           }),
+           py::arg("map"), py::arg("config") = Config{},
+           "Resumes over the frames of a Map: the next frame is numbered map.num_frames and is searched as if\n"
+           "this detector had processed the map's frames. Raises sgtllc.Error if the map's fields differ.")
       .def("process",
            [](PyLoopDetector& d, const ArrayLike& points, const ArrayLike& labels, bool drop_nonfinite) {
              LabeledCloud cloud = cloudFromArrays(points, labels, "", drop_nonfinite);
@@ -69,7 +80,24 @@ void bindDetector(py::module_& m) {
              }
              return nodesToArrays(d.detector.database().nodes(frame));
            },
-           py::arg("frame"), "(centres (N, 3) float64, classes (N,) int32) of a stored frame.");
+           py::arg("frame"), "(centres (N, 3) float64, classes (N,) int32) of a stored frame.")
+      .def("to_map",
+           [](PyLoopDetector& d, std::optional<std::vector<std::string>> names, const py::object& poses) {
+             std::vector<std::string> frame_names;
+             if (names) {
+               frame_names = std::move(*names);
+             } else {
+               for (int f = 0; f < d.detector.numFrames(); ++f) frame_names.push_back(std::to_string(f));
+             }
+             std::vector<Eigen::Matrix4d> frame_poses;
+             if (!poses.is_none()) frame_poses = posesFromArray(poses, "poses");
+             std::lock_guard<std::mutex> lock(d.mutex);
+             return std::make_shared<map::Map>(map::makeMap(d.detector.database(), d.detector.config(),
+                                                            std::move(frame_names), std::move(frame_poses)));
+           },
+           py::arg("names") = py::none(), py::arg("poses") = py::none(),
+           "The stored frames as a Map (copied): names (one per frame; default '0', '1', ...) and optional\n"
+           "(N, 4, 4) poses T_world_lidar. Raises sgtllc.Error for a wrong count or a repeated name.");
 
   m.def("compare_pair",
         [](const ArrayLike& qp, const ArrayLike& ql, const ArrayLike& mp, const ArrayLike& ml,

@@ -49,8 +49,11 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindConfig(m);
   sgtllc::python::bindBackendConfig(m);
   sgtllc::python::bindResults(m);
+  sgtllc::python::bindMap(m);  // before the detector, whose to_map returns a Map
   sgtllc::python::bindDetector(m);
   sgtllc::python::bindIo(m);
   sgtllc::python::bindMetrics(m);
+  sgtllc::python::bindRelocalization(m);
   sgtllc::python::bindBackend(m);
+  sgtllc::python::bindAccumulate(m);
 }

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from enum import Enum
-from typing import Iterator, MutableMapping, MutableSequence, Optional, Sequence, Tuple
+from typing import Iterator, overload, MutableMapping, MutableSequence, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -27,7 +27,7 @@ class GlobalMode(Enum):
 class SubVectorKind(Enum):
     DOT_PRODUCTS: int; ANGLES: int; LENGTHS: int
 class RetrievalMethod(Enum):
-    BRUTE_FORCE: int; KD_TREE: int
+    BRUTE_FORCE: int; KD_TREE: int; IVF: int
 class RetrievalKey(Enum):
     DISTANCE_HISTOGRAM: int; GLOBAL_DESCRIPTOR: int
 class NodeScore(Enum):
@@ -80,6 +80,9 @@ class RetrievalConfig:
     key: RetrievalKey
     histogram_bins: int
     histogram_range: float
+    ivf_lists: int
+    ivf_probe: int
+    ivf_train_frames: int
 class AssociationConfig:
     sigma_1: float
     max_delta_aj: float
@@ -289,15 +292,41 @@ class PairResult:
 class LoopDetector:
     num_frames: int
     config: Config
+    @overload
     def __init__(self, config: Config = ...) -> None: ...
+    @overload
+    def __init__(self, map: Map, config: Config = ...) -> None: ...
     def process(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> FrameResult: ...
     def process_nodes(self, centres: ArrayLike, classes: ArrayLike) -> FrameResult: ...
     def first_searched_frame(self) -> int: ...
     def nodes(self, frame: int) -> Nodes: ...
+    def to_map(self, names: Optional[Sequence[str]] = None, poses: Optional[ArrayLike] = None) -> Map: ...
 def compare_pair(query_points: ArrayLike, query_labels: ArrayLike, match_points: ArrayLike, match_labels: ArrayLike,
                  config: Optional[Config] = None, drop_nonfinite: bool = False) -> PairResult: ...
 def compare_nodes(query_centres: ArrayLike, query_classes: ArrayLike, match_centres: ArrayLike,
                   match_classes: ArrayLike, config: Optional[Config] = None) -> PairResult: ...
+
+# --- maps (map.cpp) ---
+class Map:
+    num_frames: int
+    names: list[str]
+    has_poses: bool
+    poses: Optional[np.ndarray]
+    config: list[Tuple[str, str]]
+    def nodes(self, frame: int) -> Nodes: ...
+    def save(self, path: str, force: bool = False) -> None: ...
+def load_map(path: str, config: Optional[Config] = None) -> Map: ...
+class Relocalization:
+    search: FrameResult
+    map_frame: int
+    localized: bool
+    score: float
+    T_mapframe_query: np.ndarray
+    T_world_query: Optional[np.ndarray]
+class Relocalizer:
+    def __init__(self, map: Map, config: Config = ...) -> None: ...
+    def localize(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> Relocalization: ...
+    def localize_nodes(self, centres: ArrayLike, classes: ArrayLike) -> Relocalization: ...
 
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
@@ -368,6 +397,41 @@ def relative_pose_error(ground_truth: ArrayLike, estimate: ArrayLike, delta_fram
 def kitti_segment_error(ground_truth: ArrayLike, estimate: ArrayLike, lengths_m: Sequence[float] = ...,
                         step_frames: int = 10) -> SegmentError: ...
 
+# --- relocalization (relocalization.cpp; docs/relocalization.md) ---
+class RelocalizationQuery:
+    query_number: int
+    map_frame: int
+    accepted: bool
+    score: float
+    T_mapframe_query: np.ndarray
+    def __init__(self, query_number: int, map_frame: int = -1, accepted: bool = False, score: float = 0.0,
+                 T_mapframe_query: Optional[ArrayLike] = None) -> None: ...
+class RelocalizationProtocol:
+    positive_distance: float
+    negative_distance: float
+    max_translation_m: float
+    max_rotation_deg: float
+    def __init__(self) -> None: ...
+class RelocalizationMetrics:
+    queries: int
+    positives: int
+    negatives: int
+    accepted: int
+    accepted_near: int
+    accepted_between: int
+    accepted_far: int
+    accepted_negatives: int
+    pose_successes: int
+    recall_at_1: Optional[float]
+    precision: Optional[float]
+    precision_no_between: Optional[float]
+    pose_success: Optional[float]
+    rte_mean_m: Optional[float]
+    rre_mean_deg: Optional[float]
+    false_rate: Optional[float]
+def relocalization_metrics(queries: Sequence[RelocalizationQuery], map_poses: ArrayLike, query_poses: ArrayLike,
+                           protocol: RelocalizationProtocol = ...) -> RelocalizationMetrics: ...
+
 # --- back end (backend.cpp) ---
 class EdgeKind(Enum):
     ODOMETRY: int; LOOP: int
@@ -412,3 +476,13 @@ class PoseGraphOptimizer:
     def close_loop(self, loop: Edge) -> BackendResult: ...
     def optimize(self) -> BackendResult: ...
     def optimize_reduced(self) -> BackendResult: ...
+
+# --- scan accumulation (accumulate.cpp) ---
+class ScanAccumulator:
+    capacity: int
+    points: int
+    bytes: int
+    def __init__(self, scans: int) -> None: ...
+    def add(self, points: ArrayLike, labels: ArrayLike, T_world_scan: ArrayLike) -> Tuple[np.ndarray, np.ndarray]: ...
+    def __len__(self) -> int: ...
+    def clear(self) -> None: ...

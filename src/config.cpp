@@ -4,6 +4,7 @@
 #include <string>
 
 #include "config_ranges.h"
+#include "retrieval/ivf_index.h"
 #include "sgtllc/labels.h"
 
 namespace sgtllc {
@@ -114,6 +115,13 @@ void Config::validate() const {
   checkInt("retrieval.num_candidates", retrieval.num_candidates, 1, 1000);
   checkInt("retrieval.exclude_recent", retrieval.exclude_recent, 1, kMaxFrames);  // a frame never matches itself
   checkInt("retrieval.warmup_frames", retrieval.warmup_frames, 0, kMaxFrames);
+  checkInt("retrieval.ivf_lists", retrieval.ivf_lists, 0, 65536);
+  checkInt("retrieval.ivf_probe", retrieval.ivf_probe, 1, 65536);
+  checkInt("retrieval.ivf_train_frames", retrieval.ivf_train_frames, 64, kMaxFrames);
+  if (retrieval.method == RetrievalMethod::kIvf && !internal::ivfAvailable()) {
+    throw ConfigError("retrieval.method",
+                      "retrieval.method: ivf needs sgtllc built with FAISS (install libfaiss-dev and configure again)");
+  }
   checkReal("association.sigma_1", association.sigma_1, {-1.0}, {1.0});
   checkReal("association.max_delta_aj", association.max_delta_aj, {0.0, false}, {1.0e6});
   // S is a share of slots with score ratio and a count of them (at most C² = 49 for the seven classes) with

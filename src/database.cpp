@@ -4,44 +4,43 @@
 #include <stdexcept>
 #include <utility>
 
+#include "internal/squared_distance.h"
 #include "kdtree_index.h"
+#include "retrieval/ivf_index.h"
 
 namespace sgtllc {
-namespace {
 
-/// Squared L2 distance with eight independent partial sums: the compiler may vectorise it (a single running sum
-/// is a strict float dependency chain it must not reorder), and the fixed summation order keeps results
-/// identical from run to run.
-float squaredDistance(const float* a, const float* b, int dim) {
-  constexpr int kLanes = 8;
-  float lane[kLanes] = {};
-  int d = 0;
-  for (; d + kLanes <= dim; d += kLanes) {
-    for (int l = 0; l < kLanes; ++l) {
-      const float diff = a[d + l] - b[d + l];
-      lane[l] += diff * diff;
-    }
-  }
-  float sum = 0.0f;
-  for (; d < dim; ++d) sum += (a[d] - b[d]) * (a[d] - b[d]);
-  for (float v : lane) sum += v;
-  return sum;
-}
-
-}  // namespace
+using internal::squaredDistance;
 
 struct FrameDatabase::Impl {
   RetrievalMethod method;
+  RetrievalConfig retrieval;  ///< the inverted file's parameters (kIvf)
+  int threads = 1;
   std::vector<std::vector<Node>> nodes;
   std::vector<float> globals;  ///< row-major, one row per frame
   int dim = -1;
   std::unique_ptr<internal::KdTreeIndex> kdtree;  ///< built lazily for kKdTree
+  std::unique_ptr<internal::IvfIndex> ivf;        ///< made at the first query for kIvf
+
+  internal::IvfIndex& ivfIndex() {
+    if (!ivf) ivf = std::make_unique<internal::IvfIndex>(&globals, dim, retrieval, threads);
+    return *ivf;
+  }
 };
 
 FrameDatabase::FrameDatabase(RetrievalMethod method) : impl_(std::make_unique<Impl>()) { impl_->method = method; }
+FrameDatabase::FrameDatabase(const RetrievalConfig& retrieval, int threads) : FrameDatabase(retrieval.method) {
+  impl_->retrieval = retrieval;
+  impl_->threads = threads;
+}
 FrameDatabase::~FrameDatabase() = default;
 FrameDatabase::FrameDatabase(FrameDatabase&&) noexcept = default;
 FrameDatabase& FrameDatabase::operator=(FrameDatabase&&) noexcept = default;
+
+void FrameDatabase::setMethod(RetrievalMethod method) {
+  impl_->method = method;
+  impl_->kdtree.reset();
+}
 
 int FrameDatabase::size() const { return static_cast<int>(impl_->nodes.size()); }
 const std::vector<Node>& FrameDatabase::nodes(int index) const { return impl_->nodes.at(index); }
@@ -68,6 +67,15 @@ std::vector<RetrievedFrame> FrameDatabase::query(const std::vector<float>& globa
     throw std::invalid_argument("FrameDatabase::query: global descriptor length differs from the stored ones");
   }
   std::vector<std::pair<int, float>> hits;
+  if (impl_->method == RetrievalMethod::kIvf) {
+    internal::IvfIndex& ivf = impl_->ivfIndex();
+    ivf.update();
+    if (ivf.trained()) {
+      ivf.knn(global.data(), last, k, impl_->retrieval.ivf_probe, &hits);
+      for (const auto& [f, d2] : hits) out.push_back(RetrievedFrame{f, d2});
+      return out;
+    }
+  }
   // The tree only grows; a query over an older prefix than it holds falls back to the exact scan.
   if (impl_->method == RetrievalMethod::kKdTree && (!impl_->kdtree || impl_->kdtree->size() <= last + 1)) {
     if (!impl_->kdtree) impl_->kdtree = std::make_unique<internal::KdTreeIndex>(&impl_->globals, impl_->dim);
@@ -88,6 +96,19 @@ std::vector<RetrievedFrame> FrameDatabase::query(const std::vector<float>& globa
   }
   for (const auto& [f, d2] : hits) out.push_back(RetrievedFrame{f, d2});
   return out;
+}
+
+std::optional<IvfState> FrameDatabase::ivfState() const {
+  if (!impl_->ivf || !impl_->ivf->trained()) return std::nullopt;
+  return impl_->ivf->state();
+}
+
+void FrameDatabase::restoreIvf(IvfState state) {
+  if (impl_->method != RetrievalMethod::kIvf) {
+    throw std::invalid_argument("FrameDatabase::restoreIvf: the database does not search with an inverted file");
+  }
+  if (impl_->dim < 0) throw std::invalid_argument("FrameDatabase::restoreIvf: the database has no frames");
+  impl_->ivfIndex().restore(std::move(state));
 }
 
 size_t FrameDatabase::frameBytes(int index) const {

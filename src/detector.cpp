@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
 #include <utility>
 
 #include "sgtllc/parallel.h"
@@ -27,8 +28,20 @@ const Config& validated(const Config& config) {
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads),
-      database_(config.retrieval.method),
+      database_(config.retrieval, config.threads),
       clouds_(config.registration, effectiveLabelConfig(config)) {
+}
+
+LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopDetector(config) {
+  if (database.size() > 0 && database.globalDimension() != retrieval::retrievalKeySize(config_)) {
+    throw Error("LoopDetector: the database's keys have " + std::to_string(database.globalDimension()) +
+                " entries, the configuration's " + std::to_string(retrieval::retrievalKeySize(config_)) +
+                " (retrieval.key, histogram_bins or the class set differ)");
+  }
+  database_ = std::move(database);
+  database_.setMethod(config_.retrieval.method);
+  // The resumed frames have no registration clouds: their loops keep the SVD pose (as frames given as nodes).
+  for (int f = 0; f < database_.size(); ++f) clouds_.add(CompactCloud{});
 }
 
 int LoopDetector::firstSearchedFrame() const {
@@ -79,40 +92,44 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   result.timing.description_ms = msSince(start);
 
   // Query q sees frames 0 … q − G only (algorithm §5 [CHOICE]), and none before the warm-up.
-  start = Clock::now();
   const RetrievalConfig& rc = config_.retrieval;
-  std::vector<RetrievedFrame> retrieved;
   if (result.frame < rc.warmup_frames) {
     result.search = Search::kWarmup;
   } else if (result.frame < rc.exclude_recent) {
     result.search = Search::kTooRecent;
   } else {
-    retrieved = database_.query(key, result.frame - rc.exclude_recent, rc.num_candidates);
+    searchDatabase(query, key, database_, result.frame - rc.exclude_recent, config_, &result);
   }
-  result.timing.retrieval_ms = msSince(start);
+
+  database_.add(StoredFrame{query.graph.nodes, std::move(key)});
+  return result;
+}
+
+void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database,
+                    int last, const Config& config, FrameResult* result) {
+  auto start = Clock::now();
+  std::vector<RetrievedFrame> retrieved = database.query(key, last, config.retrieval.num_candidates);
+  result->timing.retrieval_ms = msSince(start);
 
   // Candidates are verified in ascending frame index (algorithm §5); each writes only its own slot.
   start = Clock::now();
   std::sort(retrieved.begin(), retrieved.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
-  result.candidates.resize(retrieved.size());
-  parallelFor(static_cast<int>(retrieved.size()), config_.threads, [&](int c) {
-    Candidate& cand = result.candidates[c];
+  result->candidates.assign(retrieved.size(), Candidate{});
+  parallelFor(static_cast<int>(retrieved.size()), config.threads, [&](int c) {
+    Candidate& cand = result->candidates[c];
     cand.frame = retrieved[c].frame;
     cand.distance2 = retrieved[c].distance2;
-    const DescribedFrame candidate =
-        describeFrame(database_.nodes(cand.frame), config_.graph, config_.descriptor, /*with_global=*/false,
-                      config_.numClasses());
-    cand.match = matchFrames(query, candidate, config_);
+    const DescribedFrame candidate = describeFrame(database.nodes(cand.frame), config.graph, config.descriptor,
+                                                   /*with_global=*/false, config.numClasses());
+    cand.match = matchFrames(query, candidate, config);
   });
   std::vector<const MatchResult*> matches;
-  for (const Candidate& cand : result.candidates) matches.push_back(&cand.match);
-  result.best = selectCandidate(matches, config_.verification);
-  result.lateral = result.best >= 0 && isLateral(result.candidates[result.best].match, config_.verification);
-  result.is_loop = result.best >= 0 && isLoop(result.candidates[result.best].match, config_.verification);
-  result.timing.verification_ms = msSince(start);
-
-  database_.add(StoredFrame{query.graph.nodes, std::move(key)});
-  return result;
+  for (const Candidate& cand : result->candidates) matches.push_back(&cand.match);
+  result->best = selectCandidate(matches, config.verification);
+  const Candidate* best = result->best >= 0 ? &result->candidates[result->best] : nullptr;
+  result->lateral = best && isLateral(best->match, config.verification);
+  result->is_loop = best && isLoop(best->match, config.verification);
+  result->timing.verification_ms = msSince(start);
 }
 
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config) {

@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "sgtllc/io/pcd.h"
 #include "test_cli_support.h"
 #include "test_support.h"
 
@@ -85,9 +87,25 @@ TEST_F(Cli, PairJsonHasTheDocumentedKeys) {
 TEST_F(Cli, ExportedNodeFilesGiveTheSameResult) {
   const CliRun r = run("pair --json --export " + path("out") + " " + scan("004501") + " " + scan("000052"), false);
   ASSERT_EQ(r.status, 0) << r.out;
-  for (const char* f : {"query.ply", "match.ply", "matches.ply", "query_nodes.txt", "match_nodes.txt"}) {
+  for (const char* f : {"query.ply", "match.ply", "matches.ply", "query_nodes.txt", "match_nodes.txt",
+                        "query_nodes.pcd", "match_nodes.pcd"}) {
     EXPECT_TRUE(fs::exists(path("out/") + f)) << f;
   }
+  // The ASCII PCD of the nodes the README promises: one point per node, at the node file's coordinates.
+  const LabeledCloud pcd = io::readPcd(path("out/query_nodes.pcd"));
+  ASSERT_EQ(pcd.points.size(), 23u);
+  std::ifstream pcd_text(path("out/query_nodes.pcd"));
+  EXPECT_THAT(std::string(std::istreambuf_iterator<char>(pcd_text), {}), HasSubstr("\nDATA ascii\n"));
+  std::ifstream nodes_txt(path("out/query_nodes.txt"));
+  std::string line;
+  while (std::getline(nodes_txt, line) && (line.empty() || line[0] == '#')) {
+  }
+  double x = 0, y = 0, z = 0;
+  std::istringstream(line) >> x >> y >> z;
+  EXPECT_NEAR(pcd.points[0].x(), x, 1e-5);
+  EXPECT_NEAR(pcd.points[0].z(), z, 1e-5);
+  EXPECT_NEAR(pcd.points[0].y(), y, 1e-5);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["score_t"], nlohmann::json::parse(r.out)["score"]);
   std::ifstream ply(path("out/matches.ply"));
   const std::string text(std::istreambuf_iterator<char>(ply), {});
   EXPECT_THAT(text, HasSubstr("element vertex 48\n"));  // 25 match + 23 query nodes

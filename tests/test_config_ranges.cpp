@@ -71,6 +71,9 @@ std::vector<Range> ranges() {
   r.push_back({"retrieval.num_candidates", {"1", "1000"}, {"0", "1001", "1000000000"}, "[1, 1000]"});
   r.push_back({"retrieval.exclude_recent", {"1", "1000000"}, {"0", "1000001"}, "[1, 1000000]"});
   r.push_back({"retrieval.warmup_frames", {"0", "1000000"}, {"-1", "1000001"}, "[0, 1000000]"});
+  r.push_back({"retrieval.ivf_lists", {"0", "65536"}, {"-1", "65537"}, "[0, 65536]"});
+  r.push_back({"retrieval.ivf_probe", {"1", "65536"}, {"0", "65537"}, "[1, 65536]"});
+  r.push_back({"retrieval.ivf_train_frames", {"64", "1000000"}, {"63", "1000001"}, "[64, 1000000]"});
   r.push_back({"association.sigma_1", {"-1", "1"}, {"-1.5", "1.5"}, "[-1, 1]"});
   r.push_back({"association.max_delta_aj", {"1e-09", "1000000"}, {"0", "1000001"}, "(0, 1000000]"});
   r.push_back({"association.sigma_2", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1] (association.score: ratio"});
@@ -203,8 +206,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 27 other keys, 18 backend.*, 14 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 27 + 18 + 14 + 26);
+  // 8 classes incl. vehicle, 30 other keys, 18 backend.*, 14 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 30 + 18 + 14 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

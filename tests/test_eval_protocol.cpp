@@ -79,7 +79,10 @@ TEST_F(PlantedSequence, ReportFolderHasEveryFile) {
   const SequenceRun run = runSequenceEvaluation(source, truth, config, options);
   const std::string out = dir + "_report";
   fs::remove_all(out);
-  writeSequenceReport(out, run, computeSequenceMetrics(run, options), options, ReportInfo{dir, "", "test", "", ""});
+  ReportInfo info;
+  info.input = dir;
+  info.command = "test";
+  writeSequenceReport(out, run, computeSequenceMetrics(run, options), options, info);
   for (const char* f : {"report.md", "metrics.json", "pr_curve.csv", "frames.csv", "candidates.csv", "pr_curves.png",
                         "timing.png",
                         "memory.png", "trajectory.png"}) {

@@ -185,12 +185,12 @@ TEST_F(TrajectoryPlot, WritesAPngAndChecksLoopFrames) {
   data.corrected = data.ground_truth;
   data.loops = {{0, 49, true}, {5, 30, false}};
   sgtllc::eval::plotTrajectories(path("top.png"), data);
-  EXPECT_EQ(pngSize(path("top.png")), std::make_pair(1000, 900));
+  EXPECT_EQ(pngSize(path("top.png")), std::make_pair(1250, 900));
   data.loops.push_back({0, 50, true});
   EXPECT_THAT([&] { sgtllc::eval::plotTrajectories(path("bad.png"), data); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("loop 0 -> 50 names a frame outside")));
   sgtllc::eval::plotTrajectories(path("empty.png"), sgtllc::eval::TrajectoryPlotData{});
-  EXPECT_EQ(pngSize(path("empty.png")), std::make_pair(1000, 900));
+  EXPECT_EQ(pngSize(path("empty.png")), std::make_pair(1250, 900));
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 struct CliResult {
   int status = -1;
@@ -59,6 +60,23 @@ TEST_F(SimCli, WritesAReadableSequenceAndASummary) {
   EXPECT_FALSE(fs::exists(path("seq/preview_scan.png")));
 }
 
+TEST_F(SimCli, WarnsWhenThePlannedRevisitsDoNotFit) {
+  // Three frames (a few metres) cannot hold the one planned revisit (at least 80 m after 150 m of road).
+  const CliResult r = simulate("--out " + path("seq") + " --frames 3 --seed 4 --no-preview");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string head = "warning: only 0 of the 1 planned revisit fit in 3 frames; --frames ";
+  const size_t at = r.out.find(head);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const int needed = std::atoi(r.out.c_str() + at + head.size());
+  EXPECT_GT(needed, 300);  // 80 m of revisit at 30 % of the route and ~8.5 m/s
+  EXPECT_LT(needed, 1000);
+  EXPECT_THAT(r.out, HasSubstr(" would hold it (without a revisit the sequence has no loops to find)\n"));
+  // No revisit planned: nothing to warn about.
+  const CliResult none = simulate("--out " + path("none") + " --frames 3 --seed 4 --revisits 0 --no-preview");
+  ASSERT_EQ(none.status, 0) << none.out;
+  EXPECT_THAT(none.out, Not(HasSubstr("warning")));
+}
+
 TEST_F(SimCli, BadValuesExitWithUsageErrors) {
   for (const char* args : {"--frames 3 --seed 1 --scene downtown", "--frames 0 --seed 1",
                            "--frames 3 --seed 1 --label-noise 2", "--frames 3 --seed 1 --sensor vlp16",
@@ -98,6 +116,70 @@ TEST_F(SimCli, RefusesAFileAsOutput) {
   const CliResult r = simulate("--out " + path("file") + " --frames 2 --seed 1 --force");
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.out, HasSubstr("not a folder"));
+}
+
+/// Lines of a text file.
+size_t lineCount(const std::string& path) {
+  std::ifstream in(path);
+  size_t n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+TEST_F(SimCli, SecondSessionThroughAFirstSessionsWorld) {
+  CliResult r = simulate("--out " + path("s1") + " --frames 30 --seed 4 --no-preview");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(fs::exists(path("s1/simulation.txt")));
+  EXPECT_FALSE(fs::exists(path("s1/cross_session.txt")));
+  r = simulate("--out " + path("s2") + " --frames 20 --world-of " + path("s1") + " --no-preview");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("second session in the world of seed 4 (30 frames)"));
+  EXPECT_THAT(r.out, HasSubstr("seed 5"));  // the first session's seed + 1
+  EXPECT_EQ(lineCount(path("s2/cross_session.txt")), 20u);
+  EXPECT_EQ(lineCount(path("s2/poses.txt")), 20u);
+  std::ifstream manifest(path("s2/simulation.txt"));
+  const std::string text(std::istreambuf_iterator<char>(manifest), {});
+  EXPECT_THAT(text, HasSubstr("\nseed 5\n"));
+  EXPECT_THAT(text, HasSubstr("\nfirst.seed 4\n"));
+  EXPECT_EQ(io::SequenceDir(path("s2")).size(), 20u);
+
+  // What cannot be a first session, or a second one.
+  struct Case {
+    std::string args;
+    int status;
+    std::string message;
+  };
+  fs::create_directories(path("plain"));
+  const std::vector<Case> cases = {
+      {"--world-of " + path("plain"), 1, "has no simulation.txt"},
+      {"--world-of " + path("s2"), 1, "is itself a second session"},
+      {"--world-of " + path("s1") + " --revisits 2", 2, "plans no revisits of its own"},
+      {"--world-of " + path("s1") + " --scene rural", 1, "was simulated in the urban scene"},
+      {"--world-of " + path("s1") + " --seed 4", 1, "seed other than its first session's (4)"},
+      {"--world-of " + path("missing"), 2, "missing"},
+  };
+  for (const Case& c : cases) {
+    r = simulate("--out " + path("bad") + " --frames 5 --no-preview " + c.args);
+    EXPECT_EQ(r.status, c.status) << c.args << "\n" << r.out;
+    EXPECT_THAT(r.out, HasSubstr(c.message)) << c.args;
+    EXPECT_FALSE(fs::exists(path("bad"))) << c.args;
+  }
+  // Never into the first session's own folder, not even with --force.
+  r = simulate("--out " + path("s1") + " --frames 5 --no-preview --force --world-of " + path("s1"));
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("is the first session's folder"));
+  EXPECT_EQ(lineCount(path("s1/poses.txt")), 30u);
+  // A first session whose poses the rebuilt world does not reproduce (edited, or another simulator version).
+  std::ifstream in(path("s1/poses.txt"));
+  std::string poses(std::istreambuf_iterator<char>(in), {});
+  in.close();
+  // Frame 0 gets frame 29's pose, some 20 m away.
+  poses = poses.substr(poses.rfind('\n', poses.size() - 2) + 1) + poses.substr(poses.find('\n') + 1);
+  std::ofstream(path("s1/poses.txt")) << poses;
+  r = simulate("--out " + path("bad") + " --frames 5 --no-preview --world-of " + path("s1"));
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("does not match the world rebuilt from its simulation.txt"));
+  EXPECT_FALSE(fs::exists(path("bad")));
 }
 
 }  // namespace

@@ -181,7 +181,8 @@ TEST_F(SimOutput, SameBytesAtAnyThreadCount) {
     ASSERT_EQ(slurp(entry.path()), slurp(other)) << fs::relative(entry.path(), dir());
     ++files;
   }
-  EXPECT_EQ(files, 2u * 600u + 7u);
+  // .bin and .label per frame; calib, poses, odometry, times, loop pairs, simulation.txt and two previews.
+  EXPECT_EQ(files, 2u * 600u + 8u);
 }
 
 TEST(SimWriter, AccumulatedFramesEqualFrameByFrame) {

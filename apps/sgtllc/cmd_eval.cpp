@@ -3,10 +3,13 @@
 #include <iostream>
 #include <memory>
 
+#include "accumulation.h"
+#include "build_info.h"
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
 #include "trajectory_metrics.h"
+#include "sgtllc/eval/metric_text.h"
 #include "sgtllc/eval/report.h"
 #include "sgtllc/io/config_yaml.h"
 #include "sgtllc/io/output_file.h"
@@ -22,6 +25,7 @@ struct EvalCliOptions {
   std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
   ClosingOutputs outputs;
   int threads = 0;
+  int accumulate = 1;  ///< --accumulate: scans merged into each frame
   bool json = false;
   bool force = false;
   bool no_pairs = false;  ///< --no-pairs: skip the folder's loop_pairs.txt
@@ -48,7 +52,17 @@ void checkReportFolder(const EvalCliOptions& o) {
   io::checkOutputFiles(files, io::overwriteIf(o.force), true);
 }
 
-std::string summaryLine(const char* name, double value) { return std::string(name) + " " + fixed(value, 4); }
+std::string summaryLine(const char* name, double value, bool defined = true) {
+  return std::string(name) + " " + eval::metricText(value, defined, 4);
+}
+
+/// "pose success RATE (S of N ...), mean RTE X m, RRE Y deg" with n/a where undefined.
+std::string poseLine(const eval::PoseSummary& p) {
+  return "pose success " + eval::metricText(p.success_rate, p.rateDefined(), 4) + " (" +
+         std::to_string(p.successes) + " of " + std::to_string(p.evaluated) + "), mean RTE " +
+         eval::metricText(p.rte_mean, p.meansDefined(), 3) + " m, RRE " +
+         eval::metricText(p.rre_mean, p.meansDefined(), 3) + " deg";
+}
 
 /// The pair-list protocol's terminal lines.
 std::string pairListSummary(const eval::PairListMetrics& m) {
@@ -56,15 +70,15 @@ std::string pairListSummary(const eval::PairListMetrics& m) {
                     " (both frames present), positives " + std::to_string(m.curve.n_positive) + ", negatives " +
                     std::to_string(m.curve.n_negative) + " (" + std::to_string(m.positives_scored_zero) +
                     " positives scored 0)\ndecisions equal to the label: " + std::to_string(m.correct) + " of " +
-                    std::to_string(m.n_available) + "\n" + summaryLine("F1max", m.curve.f1_max) + ", " +
-                    summaryLine("EP", m.curve.ep) + ", " +
-                    summaryLine("recall@100%precision", m.curve.recall_at_100_precision) + "\npose: " +
-                    std::to_string(m.poses.successes) + " of " + std::to_string(m.poses.evaluated) +
+                    std::to_string(m.n_available) + "\n" + summaryLine("F1max", m.curve.f1_max, m.curve.defined()) +
+                    ", " + summaryLine("EP", m.curve.ep, m.curve.defined()) + ", " +
+                    summaryLine("recall@100%precision", m.curve.recall_at_100_precision, m.curve.defined()) +
+                    "\npose: " + std::to_string(m.poses.successes) + " of " + std::to_string(m.poses.evaluated) +
                     " detected true loops within 2 m / 5 deg";
   if (m.poses.successes) {
     out += ", mean RTE " + fixed(m.poses.rte_mean, 3) + " m, RRE " + fixed(m.poses.rre_mean, 3) + " deg";
   }
-  return out + "\n";
+  return out + "\n" + eval::undefinedText(eval::undefinedMetrics(m));
 }
 
 /// "Only N of M listed pairs ..." when some listed frames are not in the input, else "".
@@ -162,14 +176,18 @@ void runEval(const EvalCliOptions& o) {
     if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
     checkClosingOutputs(o.outputs, o.force);
   }
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
+  eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   eval::EvalOptions options;
   options.threads = config.threads;
   Progress progress("frames", source.size());
   options.progress = [&progress](size_t done, size_t, int loops) {
     progress.update(done, std::to_string(loops) + " loops");
   };
-  eval::ReportInfo info{o.nodes.empty() ? o.sequence : o.nodes, o.pairs, o.command, io::configToYaml(config), ""};
+  eval::ReportInfo info = runInfo();
+  info.input = o.nodes.empty() ? o.sequence : o.nodes;
+  info.pairs_file = o.pairs;
+  info.command = o.command;
+  info.config_yaml = io::configToYaml(config);
   eval::ReportExtra extra;
   if (!o.odometry.empty()) {
     back.odometry =
@@ -180,6 +198,7 @@ void runEval(const EvalCliOptions& o) {
       }
     };
   }
+  applyAccumulation(source, o.accumulate, back.odometry.get(), o.sequence, o.calib);
 
   UnknownLabels unknown;  // one warning per run, not one per frame
   options.on_frame = [&unknown, &source, chained = options.on_frame](size_t i, const FrameResult& r,
@@ -229,22 +248,24 @@ void runEval(const EvalCliOptions& o) {
     std::cout << "frames " << m.n_frames << ", queries " << m.n_queries << " (" << m.n_revisit_queries
               << " with a revisit < 3 m), scored pairs " << main.n_positive << " positive / " << main.n_negative
               << " negative\n"
-              << summaryLine("F1max", main.f1_max) << ", " << summaryLine("EP", main.ep) << ", "
-              << summaryLine("recall@100%precision", main.recall_at_100_precision) << ", "
-              << summaryLine("retrieval recall@15", m.retrieval_recall) << "\n"
+              << summaryLine("F1max", main.f1_max, main.defined()) << ", "
+              << summaryLine("EP", main.ep, main.defined()) << ", "
+              << summaryLine("recall@100%precision", main.recall_at_100_precision, main.defined()) << ", "
+              << summaryLine("retrieval recall@15", m.retrieval_recall, m.n_revisit_queries > 0) << "\n"
               << "top-1 per query: " << m.top1_counts.near << " < 3 m, " << m.top1_counts.lateral << " 3-20 m, "
               << m.top1_counts.far << " > 20 m, " << m.top1_counts.none << " without a candidate; "
-              << summaryLine("F1max", m.top1.f1_max) << ", " << summaryLine("EP", m.top1.ep)
-              << "; 3-20 m left out: " << summaryLine("F1max", m.top1_no_lateral.f1_max) << ", "
-              << summaryLine("EP", m.top1_no_lateral.ep) << "; score_t alone: "
-              << summaryLine("F1max", m.top1_score_only.f1_max) << "\nloops detected " << m.loops_detected << " (true "
+              << summaryLine("F1max", m.top1.f1_max, m.top1.defined()) << ", "
+              << summaryLine("EP", m.top1.ep, m.top1.defined()) << "; 3-20 m left out: "
+              << summaryLine("F1max", m.top1_no_lateral.f1_max, m.top1_no_lateral.defined()) << ", "
+              << summaryLine("EP", m.top1_no_lateral.ep, m.top1_no_lateral.defined()) << "; score_t alone: "
+              << summaryLine("F1max", m.top1_score_only.f1_max, m.top1_score_only.defined()) << "\nloops detected " << m.loops_detected << " (true "
               << m.loops_true << ", false " << m.loops_false << ", 3-20 m " << m.loops_lateral << "; reported lateral "
               << m.loops_reported_lateral
               << "; with a correct pose at any distance " << m.loops_pose_correct << ", of the false "
-              << m.loops_false_pose_correct << "); pose success " << fixed(m.poses.success_rate, 4) << ", mean RTE "
-              << fixed(m.poses.rte_mean, 3) << " m, RRE " << fixed(m.poses.rre_mean, 3) << " deg\n"
+              << m.loops_false_pose_correct << "); " << poseLine(m.poses) << "\n"
               << "ms per frame: median " << fixed(m.ms_per_frame_median, 2) << ", p99 " << fixed(m.ms_per_frame_p99, 2)
-              << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n";
+              << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n"
+              << eval::undefinedText(eval::undefinedMetrics(m));
     if (folder_pairs.active()) std::cout << "pair list " << folder_pairs.path << ":\n" << pairListSummary(folder_pairs.metrics);
     if (back.odometry) std::cout << back.summary << comparisonText(back.comparison);
   }
@@ -276,15 +297,20 @@ void addEvalCommand(CLI::App& app) {
                   "also close the loop: optimise this odometry (KITTI or TUM) with the detected loops and report "
                   "ATE/RPE of odometry and corrected trajectory against poses.txt");
   cmd->add_option("--calib", o->calib, "calib.txt for a KITTI --odometry (default: SEQ_DIR/calib.txt)");
+  addAccumulateOption(*cmd, o->accumulate);
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_flag("--force", o->force, "overwrite an existing report in --report (and existing output files)");
   cmd->callback([o] {
-    if (o->odometry.empty() && (!o->calib.empty() || !o->outputs.trajectory.empty() || !o->outputs.graph.empty() ||
-                                !o->outputs.loops.empty())) {
-      throw CLI::ValidationError("eval", "--calib, --out-trajectory, --out-graph and --out-loops need --odometry");
+    if (o->odometry.empty() && ((!o->calib.empty() && o->accumulate == 1) || !o->outputs.trajectory.empty() ||
+                                !o->outputs.graph.empty() || !o->outputs.loops.empty())) {
+      throw CLI::ValidationError("eval", "--calib (without --accumulate), --out-trajectory, --out-graph and "
+                                         "--out-loops need --odometry");
     }
     if (!o->odometry.empty() && !o->pairs.empty()) {
       throw CLI::ValidationError("eval", "--odometry needs the sequence protocol; drop --pairs");
+    }
+    if (o->accumulate > 1 && !o->nodes.empty()) {
+      throw CLI::ValidationError("eval", "--accumulate merges scans: give SEQ_DIR without --nodes");
     }
     o->command = commandLine();
     runEval(*o);

@@ -7,6 +7,7 @@
 #include "common.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/output_file.h"
+#include "sgtllc/io/pcd.h"
 #include "sgtllc/io/ply.h"
 
 namespace sgtllc::cli {
@@ -30,10 +31,11 @@ std::vector<io::PlyEdge> graphEdges(const std::vector<Node>& nodes, const Config
 }
 
 /// query.ply and match.ply (each graph in its own frame), matches.ply (the match graph with the query nodes moved
-/// by T_match_query and one edge per association: green inlier, red outlier), and both node sets as node files
-/// (query_nodes.txt, match_nodes.txt) that `sgtllc pair` reads back.
+/// by T_match_query and one edge per association: green inlier, red outlier), both node sets as node files
+/// (query_nodes.txt, match_nodes.txt) that `sgtllc pair` reads back, and as ASCII PCD (query_nodes.pcd,
+/// match_nodes.pcd: x y z and the class index as label, pcl::PointXYZL) for PCL and point-cloud viewers.
 struct ExportPaths {
-  std::string q, m, qm, qn, mn;
+  std::string q, m, qm, qn, mn, qp, mp;
 };
 
 /// Checks, before any work and without creating anything, that every export file can be written.
@@ -42,8 +44,8 @@ ExportPaths checkExport(const std::string& dir, bool force) {
   if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("cannot export to " + dir + ": it is a file, not a folder");
   const auto in_dir = [&](const char* name) { return (fs::path(dir) / name).string(); };
   ExportPaths p{in_dir("query.ply"), in_dir("match.ply"), in_dir("matches.ply"), in_dir("query_nodes.txt"),
-                in_dir("match_nodes.txt")};
-  io::checkOutputFiles({p.q, p.m, p.qm, p.qn, p.mn}, io::overwriteIf(force), true);
+                in_dir("match_nodes.txt"), in_dir("query_nodes.pcd"), in_dir("match_nodes.pcd")};
+  io::checkOutputFiles({p.q, p.m, p.qm, p.qn, p.mn, p.qp, p.mp}, io::overwriteIf(force), true);
   return p;
 }
 
@@ -55,12 +57,14 @@ void exportGraphs(const std::string& dir, const ExportPaths& p, const PairResult
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) throw Error("cannot create export folder " + dir + ": " + ec.message());
   const io::Overwrite overwrite = io::overwriteIf(force);
-  const auto& [q, m, qm, qn, mn] = p;
+  const auto& [q, m, qm, qn, mn, qp, mp] = p;
   const int num_classes = config.numClasses();
   io::writeGraphPly(q, r.query_nodes, graphEdges(r.query_nodes, config, 0), num_classes, overwrite);
   io::writeGraphPly(m, r.match_nodes, graphEdges(r.match_nodes, config, 0), num_classes, overwrite);
   io::writeNodesTxt(qn, r.query_nodes, config.labels, overwrite);
   io::writeNodesTxt(mn, r.match_nodes, config.labels, overwrite);
+  io::writeNodesPcd(qp, r.query_nodes, num_classes, overwrite);
+  io::writeNodesPcd(mp, r.match_nodes, num_classes, overwrite);
 
   std::vector<Node> both = r.match_nodes;
   const int offset = static_cast<int>(both.size());
@@ -147,6 +151,7 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                               {"match", o.match},
                               {"loop", r.is_loop},
                               {"score", m.score_t},
+                              {"score_t", m.score_t},
                               {"score_c", m.score_c},
                               {"rejection", rejectionName(m.rejection)},
                               {"nodes_query", r.query_nodes.size()},

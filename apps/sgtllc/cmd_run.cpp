@@ -1,14 +1,18 @@
 // `sgtllc run SEQ_DIR` / `sgtllc run --nodes NODE_DIR`: streams a sequence through the online detector.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "accumulation.h"
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
 #include "sgtllc/eval/frame_source.h"
+#include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
 #include "sgtllc/io/output_file.h"
+#include "sgtllc/map/map_file.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -21,8 +25,10 @@ struct RunOptions {
   std::string labeller;    ///< --labeller file|geometric
   std::string labels_dir;  ///< --labels-dir: NAME.label files instead of SEQ_DIR/labels
   std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
+  std::string save_map;         ///< --save-map: the database, names and poses as a map file
   ClosingOutputs outputs;
   int threads = 0;
+  int accumulate = 1;  ///< --accumulate: scans merged into each frame
   bool json = false;
   bool force = false;
   bool online = false;  ///< re-optimise at every loop instead of once at the end
@@ -47,16 +53,46 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
   }
 }
 
+/// Poses a saved map places its frames by (T_world_lidar) when there is no --odometry (then the corrected
+/// trajectory is stored): SEQ_DIR/poses.txt with its calib.txt when both exist (frames named by their line), else
+/// none. A --nodes folder holds only node files, so its poses come from --odometry. @p from says which.
+std::vector<Eigen::Matrix4d> sequencePoses(const RunOptions& o, const eval::FrameSource& source, std::string* from) {
+  namespace fs = std::filesystem;
+  std::vector<Eigen::Matrix4d> poses;
+  *from = "none (give --odometry, or a SEQ_DIR with poses.txt and calib.txt)";
+  if (o.sequence.empty()) return poses;
+  const fs::path dir(o.sequence);
+  const std::string truth_path = (dir / "poses.txt").string(), calib = (dir / "calib.txt").string();
+  if (!fs::is_regular_file(truth_path) || !fs::is_regular_file(calib)) return poses;
+  const eval::GroundTruth truth = eval::GroundTruth::fromKitti(truth_path, calib);
+  for (size_t i = 0; i < source.size(); ++i) {
+    if (!truth.has(source.number(i))) {
+      throw Error(truth_path + ": no pose for frame " + source.name(i) + " (" + std::to_string(truth.size()) +
+                  " lines; frames must be named by their line number), so --save-map cannot place the frames; "
+                  "give --odometry");
+    }
+    poses.push_back(truth.pose(source.number(i)));
+  }
+  *from = truth_path;
+  return poses;
+}
+
 void runSequence(const RunOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
+  if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
+  eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
     odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
   }
+  applyAccumulation(source, o.accumulate, odometry.get(), o.sequence, o.calib);
+  AccumulationCost accumulation;
+  std::string poses_from;
+  std::vector<Eigen::Matrix4d> map_poses;
+  if (!o.save_map.empty() && !odometry) map_poses = sequencePoses(o, source, &poses_from);
   std::unique_ptr<OnlineClosing> online;
   if (odometry && o.online) online = std::make_unique<OnlineClosing>(*odometry, config.backend);
   LoopDetector detector(config);
@@ -73,6 +109,7 @@ void runSequence(const RunOptions& o) {
                        [&](size_t index, const eval::LoadedFrame& loaded, const FrameResult& r) {
     frame_ms.push_back(r.timing.total_ms());
     load_ms.push_back(loaded.load_ms);
+    accumulation.add(loaded);
     // Unknown label ids (a network's label space, a wrong labels.preset) are summed into one warning at the end.
     ExtractionStats stats = loaded.stats;
     unknown.add(source.name(index), stats.unknown_label_points);
@@ -108,8 +145,16 @@ void runSequence(const RunOptions& o) {
   if (odometry) {
     closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
     writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend, o.force);
+    for (const Eigen::Isometry3d& T : closing->poses) map_poses.push_back(T.matrix());
+    poses_from = "the corrected trajectory of " + odometry->path + (odometry->cam0 ? " (KITTI cam0 axes: no calib)" : "");
   }
   if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);
+  if (!o.save_map.empty()) {
+    std::vector<std::string> names;
+    for (size_t i = 0; i < source.size(); ++i) names.push_back(source.name(i));
+    map::writeMapFile(o.save_map, map::makeMap(detector.database(), config, std::move(names), std::move(map_poses)),
+                      io::overwriteIf(o.force));
+  }
 
   const int n = detector.numFrames();
   const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;
@@ -119,6 +164,7 @@ void runSequence(const RunOptions& o) {
       list.push_back({{"query", l.query},
                       {"match", l.match},
                       {"score", l.score},
+                      {"score_t", l.score},
                       {"score_c", l.score_c},
                       {"T_match_query", matrixJson(l.T_match_query)}});
     }
@@ -130,17 +176,21 @@ void runSequence(const RunOptions& o) {
                 {"load_ms_median", eval::percentile(load_ms, 0.5)},
                 {"db_bytes_per_frame", bytes_per_frame},
                 {"loop_list", list}};
+    if (o.accumulate > 1) out["accumulation"] = accumulation.json(o.accumulate);
     if (closing) out["backend"] = closingJson(edges, *closing);
+    if (!o.save_map.empty()) out["map"] = {{"path", o.save_map}, {"poses", poses_from}};
     std::cout << jsonText(out) << "\n";
   } else {
     std::cout << "frames " << n << ", loops " << loops.size() << ", ms per frame: median "
               << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
-              << " (load not included: median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
+              << " (load (not included): median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
               << fixed(bytes_per_frame, 0) << " bytes per frame\n";
+    if (o.accumulate > 1) std::cout << accumulation.text(o.accumulate);
     if (closing) std::cout << closingSummary(edges, *closing);
     for (const std::string* path : {&o.out, &o.outputs.trajectory, &o.outputs.graph, &o.outputs.loops}) {
       if (!path->empty()) std::cout << "wrote " << *path << "\n";
     }
+    if (!o.save_map.empty()) std::cout << "wrote map " << o.save_map << " (" << n << " frames; poses: " << poses_from << ")\n";
   }
 }
 
@@ -157,7 +207,12 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--odometry", o->odometry,
                   "close the loop: optimise this odometry (KITTI or TUM, one pose per frame) with the loops");
   cmd->add_option("--calib", o->calib,
-                  "KITTI calib.txt for a KITTI --odometry in cam0 (default: SEQ_DIR/calib.txt if it exists)");
+                  "KITTI calib.txt for a KITTI --odometry (or poses.txt, with --accumulate) in cam0 (default: "
+                  "SEQ_DIR/calib.txt if it exists)");
+  addAccumulateOption(*cmd, o->accumulate);
+  cmd->add_option("--save-map", o->save_map,
+                  "save the database as a map file for `sgtllc localize` (frames named as the input; poses: the "
+                  "corrected --odometry trajectory, else SEQ_DIR/poses.txt with calib.txt when present)");
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
@@ -174,9 +229,13 @@ void addRunCommand(CLI::App& app) {
       throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
     }
     const bool closes = !o->outputs.trajectory.empty() || !o->outputs.graph.empty() || !o->outputs.loops.empty() ||
-                        !o->calib.empty() || o->online;
+                        (!o->calib.empty() && o->accumulate == 1) || o->online;
     if (closes && o->odometry.empty()) {
-      throw CLI::ValidationError("run", "--out-trajectory, --out-graph, --out-loops, --calib and --online need --odometry");
+      throw CLI::ValidationError("run", "--out-trajectory, --out-graph, --out-loops, --calib (without --accumulate) "
+                                        "and --online need --odometry");
+    }
+    if (o->accumulate > 1 && !o->nodes.empty()) {
+      throw CLI::ValidationError("run", "--accumulate merges scans: give SEQ_DIR, not --nodes");
     }
     runSequence(*o);
   });

@@ -1,4 +1,5 @@
-// `sgtllc simulate --out DIR --frames N --seed S`: writes a simulated SemanticKITTI-layout sequence with revisits.
+// `sgtllc simulate --out DIR --frames N --seed S`: writes a simulated SemanticKITTI-layout sequence with revisits;
+// with `--world-of S1`, a second session through S1's world (docs/relocalization.md).
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -8,10 +9,14 @@
 #include <numeric>
 #include <thread>
 
+#include <Eigen/LU>
+
 #include "commands.h"
 #include "common.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/sim/manifest.h"
 #include "sgtllc/sim/preview.h"
+#include "sgtllc/sim/revisit_fit.h"
 #include "sgtllc/sim/sequence_writer.h"
 
 namespace sgtllc::cli {
@@ -21,8 +26,10 @@ namespace fs = std::filesystem;
 
 struct SimulateOptions {
   std::string out;
+  std::string world_of;  ///< first session's folder ("" = a world of its own)
   int frames = 0;
   uint64_t seed = 1;
+  bool seed_given = false, scene_given = false;
   std::string scene = "urban";
   std::string sensor = "hdl64";
   int accumulate = 0;
@@ -78,7 +85,10 @@ void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const s
               << percentile(noisy, 0.5) << " (10-90%: " << percentile(noisy, 0.1) << "-" << percentile(noisy, 0.9)
               << "); with true labels " << percentile(truth, 0.5) << "\n";
   }
-  std::cout << "revisits: " << s.config().plannedRevisits() << " planned; " << st.query_frames
+  std::cout << "revisits: "
+            << (s.isSecondSession() ? std::string("none planned (a second session)")
+                                    : std::to_string(s.config().plannedRevisits()) + " planned")
+            << "; " << st.query_frames
             << " frames have a loop within 3 m (" << st.opposite_queries << " facing the other way)";
   if (!st.lane_shift_offsets.empty()) {
     std::cout << "; " << st.lane_shift_offsets.size() << " frames one or two lanes aside, "
@@ -87,16 +97,72 @@ void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const s
   std::cout << "\nframes by visit:";
   for (const auto& [kind, count] : st.frames_by_kind) std::cout << " " << sim::visitKindName(kind) << " " << count << ";";
   std::cout << "\nloop_pairs.txt: " << st.positives << " loops, " << st.negatives << " non-loops\n";
+  if (s.isSecondSession()) {
+    const double n = std::max(1, st.frames);
+    std::cout << "second session in the world of seed " << s.config().world_of->seed << " ("
+              << s.config().world_of->frames << " frames): " << st.cross_near << " frames ("
+              << fixed(100.0 * st.cross_near / n, 1) << " %) have a first-session frame within 3 m, " << st.cross_far
+              << " (" << fixed(100.0 * st.cross_far / n, 1) << " %) none within 20 m (cross_session.txt)\n";
+  }
   std::cout << "odometry.txt: drifts " << fixed(st.odometry_end_error, 2) << " m by the last frame ("
             << fixed(100.0 * st.odometry_end_error / std::max(st.path_length, 1e-9), 2) << " % of "
             << fixed(st.path_length, 0) << " m driven)\n";
 }
 
+/// Said before writing: the route of a short sequence cannot hold every planned revisit (issue 12 item 4).
+void warnIfRevisitsDoNotFit(const sim::Simulator& simulator) {
+  const sim::SimConfig& c = simulator.config();
+  const int planned = c.plannedRevisits(), driven = sim::drivenRevisits(simulator);
+  if (driven >= planned) return;
+  std::cerr << "warning: only " << driven << " of the " << planned << " planned revisit" << (planned == 1 ? "" : "s")
+            << " fit in " << c.frames << " frames";
+  const int needed = sim::framesForRevisits(c);
+  if (needed > 0) std::cerr << "; --frames " << needed << " would hold " << (planned == 1 ? "it" : "them all");
+  std::cerr << (driven == 0 ? " (without a revisit the sequence has no loops to find)" : "") << "\n";
+}
+
+/// A second session's first session: its manifest, checked against its poses.txt once the world is rebuilt.
+std::shared_ptr<const sim::SimConfig> firstSession(const SimulateOptions& o) {
+  if (o.world_of.empty()) return nullptr;
+  std::error_code ec;
+  if (fs::equivalent(o.out, o.world_of, ec)) {
+    throw Error("--out " + o.out + " is the first session's folder: a second session goes into a folder of its own");
+  }
+  auto first = std::make_shared<sim::SimConfig>(sim::readManifest(o.world_of));
+  if (first->world_of) {
+    throw Error(o.world_of + " is itself a second session (of seed " + std::to_string(first->world_of->seed) +
+                "); pass its first session instead: every session of a world shares that one's frame");
+  }
+  if (o.scene_given && sim::parseSceneKind(o.scene) != first->scene) {
+    throw Error("--scene " + o.scene + ": " + o.world_of + " was simulated in the " + sim::sceneName(first->scene) +
+                " scene");
+  }
+  return first;
+}
+
+/// Refuses a first session whose poses.txt the rebuilt world does not reproduce (another simulator version).
+void checkFirstSession(const sim::Simulator& s, const std::string& dir) {
+  const std::vector<Eigen::Matrix4d> written = sim::readBackLidarPoses(dir);
+  const std::vector<Eigen::Matrix4d>& rebuilt = s.firstSessionPoses();
+  const Eigen::Matrix4d to0 = s.T_world_origin().inverse();
+  double worst = 0.0;
+  for (size_t i = 0; i < std::min(written.size(), rebuilt.size()); ++i) {
+    worst = std::max(worst, (written[i].topRightCorner<3, 1>() - (to0 * rebuilt[i]).topRightCorner<3, 1>()).norm());
+  }
+  if (written.size() != rebuilt.size() || worst > 1e-3) {
+    throw Error(dir + "/poses.txt does not match the world rebuilt from its " + sim::kManifestName + " (" +
+                std::to_string(written.size()) + " poses, " + std::to_string(rebuilt.size()) + " rebuilt, up to " +
+                fixed(worst, 3) + " m apart): it was written by another version of the simulator, or edited");
+  }
+}
+
 void simulate(const SimulateOptions& o) {
   sim::SimConfig config;
+  config.world_of = firstSession(o);
   config.frames = o.frames;
-  config.seed = o.seed;
-  config.scene = sim::parseSceneKind(o.scene);
+  // A second session's default seed: the next one after its first session's.
+  config.seed = o.seed_given || !config.world_of ? o.seed : config.world_of->seed + 1;
+  config.scene = config.world_of ? config.world_of->scene : sim::parseSceneKind(o.scene);
   config.sensor = sim::SensorConfig::preset(sim::parseSensorKind(o.sensor));
   config.accumulate = o.accumulate;
   config.label_noise = o.label_noise;
@@ -104,6 +170,8 @@ void simulate(const SimulateOptions& o) {
   sim::checkOutputDir(o.out, o.force);  // before building the world; writeSequence checks again
   const auto start = std::chrono::steady_clock::now();
   const sim::Simulator simulator(config);
+  if (config.world_of) checkFirstSession(simulator, o.world_of);
+  warnIfRevisitsDoNotFit(simulator);
   sim::WriteOptions w;
   w.dir = o.out;
   w.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -139,13 +207,21 @@ void addSimulateCommand(CLI::App& app) {
                                                  "(SemanticKITTI layout, ground-truth poses and loop pairs)");
   cmd->add_option("--out", o->out, "output folder (new or empty; see --force)")->required();
   cmd->add_option("--frames", o->frames, "frames to simulate (10 Hz)")->required()->check(CLI::Range(1, 1000000));
-  cmd->add_option("--seed", o->seed, "random seed: the same seed gives the same files")->required();
-  cmd->add_option("--scene", o->scene, "world preset")->check(CLI::IsMember({"urban", "suburban", "rural"}))
+  cmd->add_option("--seed", o->seed, "random seed: the same seed gives the same files (required without "
+                                     "--world-of; with it, the first session's seed + 1 by default)");
+  cmd->add_option("--world-of", o->world_of,
+                  "a second session through the world of this earlier simulated sequence (its streets and "
+                  "buildings; new traffic, route and noise), with poses in its frame; writes cross_session.txt")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--scene", o->scene, "world preset (with --world-of: the first session's)")
+      ->check(CLI::IsMember({"urban", "suburban", "rural"}))
       ->capture_default_str();
   cmd->add_option("--sensor", o->sensor, "LiDAR: Velodyne HDL-64E or Livox Mid-70")
       ->check(CLI::IsMember({"hdl64", "mid70"}))
       ->capture_default_str();
-  cmd->add_option("--accumulate", o->accumulate, "raw scans merged into each frame (default: hdl64 1, mid70 10)")
+  cmd->add_option("--accumulate", o->accumulate,
+                  "raw scans merged into each frame (default: hdl64 1, mid70 10); `--sensor mid70 --accumulate 1` "
+                  "writes the raw scans, for `run|eval --accumulate N`")
       ->check(CLI::Range(1, 100));
   cmd->add_option("--label-noise", o->label_noise,
                   "segmentation error rate R: 0 = ground truth; the default is like RangeNet++")
@@ -162,7 +238,16 @@ void addSimulateCommand(CLI::App& app) {
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--force", o->force, "write into a non-empty folder, overwriting only the simulator's own files");
   cmd->add_flag("--no-preview", o->no_preview, "skip preview_scan.png and preview_trajectory.png");
-  cmd->callback([o] { simulate(*o); });
+  cmd->callback([o, cmd] {
+    o->seed_given = cmd->count("--seed") > 0;
+    o->scene_given = cmd->count("--scene") > 0;
+    // Command-line mistakes, before any file is read: CLI11's errors, so they exit with the usage code.
+    if (o->world_of.empty() && !o->seed_given) throw CLI::RequiredError("--seed (needed without --world-of)");
+    if (!o->world_of.empty() && cmd->count("--revisits") > 0) {
+      throw CLI::ValidationError("--revisits", "a second session (--world-of) plans no revisits of its own");
+    }
+    simulate(*o);
+  });
 }
 
 }  // namespace sgtllc::cli

@@ -12,5 +12,7 @@ void addConfigCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);
 void addOptimizeCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
+void addLocalizeCommand(CLI::App& app);
+void addMapCommand(CLI::App& app);
 
 }  // namespace sgtllc::cli

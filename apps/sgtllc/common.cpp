@@ -212,11 +212,27 @@ void Progress::update(size_t done, const std::string& extra) {
   constexpr int kWidth = 30;
   const double share = total_ ? static_cast<double>(done) / total_ : 1.0;
   const int filled = static_cast<int>(share * kWidth);
-  std::fprintf(stderr, "\r\033[K%s [%s%s] %zu/%zu %3d%% %s", what_.c_str(), std::string(filled, '#').c_str(),
+  // Rate over the whole run so far: frames differ in cost, and a steady average gives a steady estimate.
+  const double seconds = std::chrono::duration<double>(now - start_).count();
+  const double rate = seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0;
+  const std::string pace = rate > 0.0 ? fixed(rate, 1) + " " + what_ + "/s, " +
+                                            (done < total_ ? clockText((total_ - done) / rate) + " left"
+                                                           : "took " + clockText(seconds))
+                                      : "";
+  std::fprintf(stderr, "\r\033[K%s [%s%s] %zu/%zu %3d%% %s%s%s", what_.c_str(), std::string(filled, '#').c_str(),
                std::string(kWidth - filled, '.').c_str(), done, total_, static_cast<int>(share * 100.0),
-               extra.c_str());
+               pace.c_str(), pace.empty() || extra.empty() ? "" : ", ", extra.c_str());
   std::fflush(stderr);
   drawn_ = true;
+}
+
+std::string clockText(double seconds) {
+  if (!(seconds >= 0.0) || seconds > 1e9) return "?";
+  const long s = static_cast<long>(seconds);
+  char buf[32];
+  if (s >= 3600) std::snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else std::snprintf(buf, sizeof(buf), "%ld:%02ld", s / 60, s % 60);
+  return buf;
 }
 
 void Progress::clear() {

@@ -95,7 +95,8 @@ Json timingJson(const StageTimes& t, double load_ms);
 /// "%.*f" formatting.
 std::string fixed(double v, int digits);
 
-/// A one-line progress bar on stderr, drawn only when stderr is a terminal, at most ten times a second.
+/// A one-line progress bar on stderr, drawn only when stderr is a terminal, at most ten times a second, with the
+/// rate (frames/s) and the time left at that rate. Never part of an output file or of stdout.
 class Progress {
  public:
   Progress(std::string what, size_t total);
@@ -109,7 +110,11 @@ class Progress {
   size_t total_;
   bool enabled_;
   bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point last_;
 };
+
+/// "m:ss" (or "h:mm:ss") of @p seconds, rounded down; "?" if not finite or negative.
+std::string clockText(double seconds);
 
 }  // namespace sgtllc::cli

@@ -4,19 +4,22 @@
 
 #include <CLI/CLI.hpp>
 
+#include "build_info.h"
 #include "commands.h"
 #include "common.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "sgtllc 0.1.0");
+  app.set_version_flag("--version", sgtllc::cli::softwareText());
   sgtllc::cli::addPairCommand(app);
   sgtllc::cli::addLabelCommand(app);
   sgtllc::cli::addRunCommand(app);
   sgtllc::cli::addOptimizeCommand(app);
   sgtllc::cli::addEvalCommand(app);
   sgtllc::cli::addSimulateCommand(app);
+  sgtllc::cli::addLocalizeCommand(app);
+  sgtllc::cli::addMapCommand(app);
   sgtllc::cli::addConfigCommand(app);
   std::string& line = sgtllc::cli::commandLine();
   line = "sgtllc";

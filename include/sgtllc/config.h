@@ -123,8 +123,8 @@ enum class SubVectorOrder {
 /// Global descriptor variants (algorithm §5).
 enum class GlobalMode {
   kG1,  ///< paper: 98-D fuzzy pooling of max a_k (floored at 0)
-  kG2,  ///< code: 343-D, max 1 − cos θ_k
-  kG3,  ///< hybrid: 98-D fuzzy pooling of max 1 − cos θ_k [default]
+  kG2,  ///< code: 343-D, max 1 − cos θ_k [default: DescriptorConfig::global_mode]
+  kG3,  ///< hybrid: 98-D fuzzy pooling of max 1 − cos θ_k (the first default)
 };
 
 /// What a slot's three entries measure (the paper's Table IV ablation). Each entry belongs to one triangle vertex.
@@ -146,6 +146,11 @@ struct DescriptorConfig {
 enum class RetrievalMethod {
   kBruteForce,  ///< exact linear scan (algorithm §5 [CHOICE]) [default]
   kKdTree,      ///< exact kd-tree search (nanoflann); frames at equal distance up to float rounding may swap
+  /// Inverted file for large maps (algorithm §5 "Retrieval at scale"): FAISS k-means centroids over the stored keys,
+  /// each frame in its nearest centroid's list, and an exact scan of the frames in the retrieval.ivf_probe nearest
+  /// lists. Approximate (a true neighbour in an unscanned list is missed); the exact scan until
+  /// retrieval.ivf_train_frames frames are stored. Needs sgtllc built with FAISS (libfaiss-dev).
+  kIvf,
 };
 
 /// What a frame is stored and searched by.
@@ -172,6 +177,14 @@ struct RetrievalConfig {
   /// No query before this many frames are in the database (authors' code: 150) [0, 1000000].
   int warmup_frames = 0;
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
+  /// Lists of the inverted file (method ivf); 0: 2·√N at training, within [16, 16384] [0, 65536].
+  int ivf_lists = 0;
+  /// Lists a query scans (method ivf). 32 of the 2,000 lists of a million-frame map found 0.99+ of the exact
+  /// top-15 (BENCHMARKS.md "Retrieval at scale") [1, 65536].
+  int ivf_probe = 32;
+  /// Frames stored before the inverted file is trained (method ivf); fewer are searched exactly. With
+  /// ivf_lists 0 it is trained again each time the database has grown fourfold [64, 1000000].
+  int ivf_train_frames = 20000;
 };
 
 /// How the node similarity S[i][j] is formed (algorithm §6).

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "sgtllc/config.h"
@@ -25,10 +27,21 @@ struct StoredFrame {
   std::vector<float> global;
 };
 
+/// The state of an inverted file (RetrievalMethod::kIvf), as a map file keeps it: list count, the frames it was
+/// trained on, the centroids (lists × key length, row-major) and the list of every indexed frame.
+struct IvfState {
+  int lists = 0;
+  int trained_frames = 0;
+  std::vector<float> centroids;
+  std::vector<int32_t> list_of_frame;
+};
+
 /// Frames in insertion order, numbered 0, 1, 2, …, with exact K-nearest-neighbour search over global descriptors.
 class FrameDatabase {
  public:
   explicit FrameDatabase(RetrievalMethod method = RetrievalMethod::kBruteForce);
+  /// Searching with @p retrieval's method (and its inverted-file parameters); @p threads files frames in lists.
+  explicit FrameDatabase(const RetrievalConfig& retrieval, int threads = 1);
   ~FrameDatabase();
   FrameDatabase(FrameDatabase&&) noexcept;
   FrameDatabase& operator=(FrameDatabase&&) noexcept;
@@ -36,6 +49,10 @@ class FrameDatabase {
   /// Appends a frame; returns its index. Throws std::invalid_argument if the global descriptor's length differs
   /// from the first frame's.
   int add(StoredFrame frame);
+
+  /// Switches the search structure (a loaded map is searched as the configuration says); results are unchanged
+  /// up to the ties RetrievalMethod::kKdTree documents.
+  void setMethod(RetrievalMethod method);
 
   int size() const;
   /// Nodes of frame @p index.
@@ -46,8 +63,16 @@ class FrameDatabase {
 
   /// The @p k frames among 0..last (inclusive) nearest to @p global, nearest first; ties go to the lower index.
   /// Returns fewer if fewer frames are eligible, none if last < 0. With RetrievalMethod::kKdTree the tree is
-  /// extended here, so concurrent queries on one database are not safe (the detector queries from one thread).
+  /// extended here, and with kIvf the inverted file (trained at retrieval.ivf_train_frames frames; until then the
+  /// search is the exact scan), so concurrent queries on one database are not safe (the detector queries from one
+  /// thread). kIvf is approximate: a frame outside the retrieval.ivf_probe nearest lists is not found.
   std::vector<RetrievedFrame> query(const std::vector<float>& global, int last, int k) const;
+
+  /// The inverted file's state once trained (kIvf), else nothing; restoreIvf() puts a saved one back (a map
+  /// file). restoreIvf throws std::invalid_argument if the state does not fit the stored frames or the database
+  /// does not search with kIvf.
+  std::optional<IvfState> ivfState() const;
+  void restoreIvf(IvfState state);
 
   /// Bytes held for frame @p index: its nodes, its global descriptor and per-frame bookkeeping.
   size_t frameBytes(int index) const;

@@ -67,6 +67,11 @@ class LoopDetector {
  public:
   /// Throws sgtllc::Error if the configuration is invalid.
   explicit LoopDetector(const Config& config = {});
+  /// Resumes a detector over the frames of @p database (e.g. a loaded map, map/map.h): the next frame is numbered
+  /// database.size(), and searching proceeds exactly as if those frames had been processed by this detector. The
+  /// resumed frames have no registration clouds, so with registration.online their loops keep the SVD pose. Throws
+  /// sgtllc::Error if the database's key length differs from the configuration's (retrievalKeySize).
+  LoopDetector(const Config& config, FrameDatabase database);
 
   /// Processes a labelled scan (points in the sensor frame). Throws sgtllc::Error if the points and labels
   /// differ in length.
@@ -99,6 +104,14 @@ class LoopDetector {
   FrameDatabase database_;
   CloudStore clouds_;
 };
+
+/// Retrieval, verification and top-1 choice of one query frame (algorithm §5–§7.4) against the frames 0..@p last of
+/// @p database: fills result->candidates (ascending frame index), best, lateral, is_loop and the retrieval and
+/// verification times; nothing is stored. @p query is describeFrame of the query without its global descriptor
+/// and @p key its retrieval key (computeRetrievalKey). The online detector and the relocalizer (map/relocalizer.h)
+/// both search through it. Uses config.threads; the result does not depend on it.
+void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database,
+                    int last, const Config& config, FrameResult* result);
 
 /// Result of comparing two frames directly.
 struct PairResult {

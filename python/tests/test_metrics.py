@@ -77,3 +77,35 @@ def test_trajectory_errors_of_a_shifted_trajectory():
         sgtllc.absolute_trajectory_error(gt[:, :3], est)
     with pytest.raises(sgtllc.Error):
         sgtllc.absolute_trajectory_error(gt, est[:5])
+
+
+def test_relocalization_metrics_on_a_hand_built_run():
+    """Two map frames 10 m apart; a correct relocalization, a wrong frame, a rejected positive and a false one."""
+    def pose(x, y):
+        T = np.eye(4)
+        T[0, 3], T[1, 3] = x, y
+        return T
+
+    map_poses = np.stack([pose(0, 0), pose(10, 0)])
+    query_poses = np.stack([pose(1, 0), pose(9, 0), pose(0, 2), pose(0, 40)])
+    truth = np.linalg.inv(map_poses[0]) @ query_poses[0]
+    queries = [
+        sgtllc.RelocalizationQuery(0, map_frame=0, accepted=True, T_mapframe_query=truth),  # correct, exact pose
+        sgtllc.RelocalizationQuery(1, map_frame=0, accepted=True),  # 9 m from map frame 0: between 3 and 20 m
+        sgtllc.RelocalizationQuery(2),  # positive, not accepted
+        sgtllc.RelocalizationQuery(3, map_frame=1, accepted=True),  # 40 m from every map frame: false
+    ]
+    m = sgtllc.relocalization_metrics(queries, map_poses, query_poses)
+    assert (m.queries, m.positives, m.negatives, m.accepted) == (4, 3, 1, 3)
+    assert (m.accepted_near, m.accepted_between, m.accepted_far, m.accepted_negatives) == (1, 1, 1, 1)
+    assert m.recall_at_1 == pytest.approx(1 / 3)
+    assert m.precision == pytest.approx(1 / 3)
+    assert m.precision_no_between == pytest.approx(1 / 2)
+    assert m.pose_success == 1.0
+    assert m.rte_mean_m == pytest.approx(0.0, abs=1e-12)
+    assert m.false_rate == 1.0
+    np.testing.assert_array_equal(queries[0].T_mapframe_query, truth)
+    empty = sgtllc.relocalization_metrics([], map_poses, query_poses)
+    assert empty.recall_at_1 is None and empty.precision is None and empty.false_rate is None
+    with pytest.raises(sgtllc.Error, match="relocalization query 7: no ground-truth pose"):
+        sgtllc.relocalization_metrics([sgtllc.RelocalizationQuery(7)], map_poses, query_poses)

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/graph.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/sequence.h"
@@ -34,13 +35,14 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
   if (geometric) labeller = std::make_shared<const label::GeometricLabeller>(config.labeller);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
-  source.loader_ = [seq, extractor, store, labeller](size_t i) {
+  source.read_ = [seq](size_t i) { return seq->load(i); };
+  // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
+  source.reduce_ = [extractor, store, labeller](const LabeledCloud& input) {
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
-    LabeledCloud cloud = seq->load(i);
-    f.load_ms = msSince(start);
-    start = std::chrono::steady_clock::now();
-    if (labeller) cloud = label::labelCloud(std::move(cloud.points), *labeller);
+    LabeledCloud labelled;
+    if (labeller) labelled = label::labelCloud(input.points, *labeller);
+    const LabeledCloud& cloud = labeller ? labelled : input;
     NodeExtractionResult r = extractor->extract(cloud);
     f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
     f.nodes = std::move(r.nodes);
@@ -48,6 +50,14 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     start = std::chrono::steady_clock::now();
     f.clouds = store->prepare(cloud);
     f.clouds_ms = msSince(start);
+    return f;
+  };
+  source.loader_ = [read = source.read_, reduce = source.reduce_](size_t i) {
+    const auto start = std::chrono::steady_clock::now();
+    const LabeledCloud cloud = read(i);
+    const double load_ms = msSince(start);
+    LoadedFrame f = reduce(cloud);
+    f.load_ms = load_ms;
     return f;
   };
   return source;
@@ -87,31 +97,116 @@ long FrameSource::number(size_t i) const {
   return std::stol(n);
 }
 
-void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
-                    const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame) {
+LoadedFrame FrameSource::load(size_t i) const {
+  if (scans_ == 1) return loader_(i);
+  if (i >= size()) throw Error("frame " + std::to_string(i) + " is out of range");
+  ScanAccumulator buffer(scans_);
+  const size_t first = i + 1 >= static_cast<size_t>(scans_) ? i + 1 - static_cast<size_t>(scans_) : 0;
+  LabeledCloud merged;
+  double load_ms = 0.0;
+  for (size_t j = first; j <= i; ++j) {
+    const auto start = std::chrono::steady_clock::now();
+    LabeledCloud scan = read_(j);
+    if (j == i) load_ms = msSince(start);  // as when streaming: the scan of this frame
+    merged = buffer.add(std::move(scan), poses_[j]);
+  }
+  LoadedFrame f = reduce_(merged);
+  f.load_ms = load_ms;
+  f.buffer_bytes = buffer.bytes();
+  return f;
+}
+
+void FrameSource::accumulate(int scans, std::vector<Eigen::Isometry3d> T_world_scan) {
+  const ScanAccumulator check(scans);  // the range of scans, with the core's message
+  if (!read_) throw Error("scan accumulation needs scans (velodyne/ and labels/), not node files");
+  if (T_world_scan.size() != size()) {
+    throw Error("scan accumulation: " + std::to_string(T_world_scan.size()) + " poses for " +
+                std::to_string(size()) + " frames");
+  }
+  scans_ = scans;
+  poses_ = std::move(T_world_scan);
+}
+
+namespace {
+
+/// Frames first … first + count − 1 of an accumulating source: raw scans read in parallel, merged in frame order
+/// through @p buffer (which carries the previous batch's scans over), merged scans reduced in parallel.
+void loadAccumulated(const std::function<LabeledCloud(size_t)>& read,
+                     const std::function<LoadedFrame(const LabeledCloud&)>& reduce,
+                     const std::vector<Eigen::Isometry3d>& poses, ScanAccumulator& buffer, size_t first, int threads,
+                     std::vector<LoadedFrame>& frames, std::vector<std::exception_ptr>& errors) {
+  const size_t count = frames.size();
+  std::vector<LabeledCloud> clouds(count);
+  std::vector<double> load_ms(count, 0.0);
+  parallelFor(static_cast<int>(count), threads, [&](int k) {
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      clouds[k] = read(first + k);
+      load_ms[k] = msSince(start);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  std::vector<double> accumulate_ms(count, 0.0);
+  std::vector<size_t> bytes(count, 0);
+  size_t merged = 0;  // frames merged; the first read error stops there, as if the files ended
+  for (; merged < count && !errors[merged]; ++merged) {
+    const auto start = std::chrono::steady_clock::now();
+    clouds[merged] = buffer.add(std::move(clouds[merged]), poses[first + merged]);
+    accumulate_ms[merged] = msSince(start);
+    bytes[merged] = buffer.bytes();
+  }
+  parallelFor(static_cast<int>(merged), threads, [&](int k) {
+    try {
+      frames[k] = reduce(clouds[k]);
+      frames[k].load_ms = load_ms[k];
+      frames[k].accumulate_ms = accumulate_ms[k];
+      frames[k].buffer_bytes = bytes[k];
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+}
+
+}  // namespace
+
+void streamFrames(const FrameSource& source, int threads, const std::function<void(size_t, LoadedFrame&)>& on_frame) {
   const size_t batch = static_cast<size_t>(std::max(1, 4 * std::max(1, threads)));
   std::vector<LoadedFrame> frames;
   std::vector<std::exception_ptr> errors;
+  std::unique_ptr<ScanAccumulator> buffer;
+  if (source.scans_ > 1) buffer = std::make_unique<ScanAccumulator>(source.scans_);
   for (size_t first = 0; first < source.size(); first += batch) {
     const size_t count = std::min(batch, source.size() - first);
     frames.assign(count, LoadedFrame{});
     errors.assign(count, nullptr);
-    parallelFor(static_cast<int>(count), threads, [&](int k) {
-      try {
-        frames[k] = source.load(first + k);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    });
+    if (buffer) {
+      loadAccumulated(source.read_, source.reduce_, source.poses_, *buffer, first, threads, frames, errors);
+    } else {
+      parallelFor(static_cast<int>(count), threads, [&](int k) {
+        try {
+          frames[k] = source.load(first + k);
+        } catch (...) {
+          errors[k] = std::current_exception();
+        }
+      });
+    }
     for (size_t k = 0; k < count; ++k) {
       if (errors[k]) std::rethrow_exception(errors[k]);
-      FrameResult r = detector.process(std::move(frames[k].nodes), std::move(frames[k].clouds));
-      r.timing.extraction_ms = frames[k].extraction_ms;
-      r.timing.refinement_ms += frames[k].clouds_ms;
-      r.extraction = frames[k].stats;
-      on_frame(first + k, frames[k], r);
+      on_frame(first + k, frames[k]);
     }
   }
+}
+
+void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
+                    const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame) {
+  streamFrames(source, threads, [&](size_t index, LoadedFrame& frame) {
+    FrameResult r = detector.process(std::move(frame.nodes), std::move(frame.clouds));
+    r.timing.extraction_ms = frame.extraction_ms;
+    r.timing.refinement_ms += frame.clouds_ms;
+    r.extraction = frame.stats;
+    on_frame(index, frame, r);
+  });
 }
 
 }  // namespace sgtllc::eval

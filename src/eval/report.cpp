@@ -1,9 +1,11 @@
 #include "sgtllc/eval/report.h"
 
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 #include "report_plots.h"
+#include "sgtllc/eval/metric_text.h"
 
 namespace fs = std::filesystem;
 
@@ -73,6 +75,11 @@ std::string provenance(const ReportInfo& info) {
   s << ".\n\n";
   if (!info.data_note.empty()) s << info.data_note << "\n\n";
   if (!info.command.empty()) s << "Command:\n\n```sh\n" << info.command << "\n```\n\n";
+  // One list item per line, so that a comparison of two reports can leave out the date and machine lines.
+  if (!info.software.empty()) s << "- Software: " << info.software << "\n";
+  if (!info.date.empty()) s << "- Date: " << info.date << "\n";
+  if (!info.machine.empty()) s << "- Machine: " << info.machine << "\n";
+  if (!info.software.empty() || !info.date.empty() || !info.machine.empty()) s << "\n";
   return s.str();
 }
 
@@ -80,18 +87,35 @@ std::string configSection(const ReportInfo& info) {
   return info.config_yaml.empty() ? "" : "## Configuration\n\n```yaml\n" + info.config_yaml + "```\n";
 }
 
+/// The pose success rate's value and the mean errors' row.
+std::string poseRows(const PoseSummary& p) {
+  const std::string means = p.meansDefined() ? fixed(p.rte_mean, 3) + " m / " + fixed(p.rre_mean, 3) + "°" : "n/a";
+  return " | " + metricText(p.success_rate, p.rateDefined(), 4) + " (" + std::to_string(p.successes) + " of " +
+         std::to_string(p.evaluated) + ") |\n| RTE / RRE, mean over successes | " + means + " |\n";
+}
+
+/// The undefined metrics as a paragraph after a table, or "".
+std::string undefinedParagraph(const std::vector<UndefinedMetrics>& list) {
+  return list.empty() ? "" : "\n" + undefinedText(list, "- ");
+}
+
 std::string pairListTable(const PairListMetrics& m) {
+  const CurveMetrics& c = m.curve;
   std::ostringstream md;
   md << "| metric | value |\n|---|---|\n| pairs listed / scored | " << m.n_pairs << " / " << m.n_available
      << " (the others name frames that are not in the input) |\n| positives / negatives scored | "
-     << m.curve.n_positive << " / " << m.curve.n_negative << " |\n| positives scored 0 (rejected by a gate or "
+     << c.n_positive << " / " << c.n_negative << " |\n| positives scored 0 (rejected by a gate or "
      << "RANSAC) | " << m.positives_scored_zero << " |\n| decisions equal to the label | " << m.correct << " of "
-     << m.n_available << " |\n| F1max | " << fixed(m.curve.f1_max, 4) << " |\n| EP | " << fixed(m.curve.ep, 4)
-     << " |\n| recall at 100 % precision | " << fixed(m.curve.recall_at_100_precision, 4)
-     << " |\n| pose success rate | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes << " of "
-     << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3) << " m / "
-     << fixed(m.poses.rre_mean, 3) << "° |\n";
+     << m.n_available << " |\n| F1max | " << metricText(c.f1_max, c.defined(), 4) << " |\n| EP | "
+     << metricText(c.ep, c.defined(), 4) << " |\n| recall at 100 % precision | "
+     << metricText(c.recall_at_100_precision, c.defined(), 4) << " |\n| pose success rate" << poseRows(m.poses)
+     << undefinedParagraph(undefinedMetrics(m));
   return md.str();
+}
+
+/// "F1MAX / EP" of a curve, n/a without positives.
+std::string f1Ep(const CurveMetrics& c) {
+  return metricText(c.f1_max, c.defined(), 4) + " / " + metricText(c.ep, c.defined(), 4);
 }
 
 /// The top-1 protocol with its distance bands (issue 13 item 6).
@@ -104,10 +128,9 @@ std::string top1Section(const SequenceMetrics& m, const EvalOptions& options) {
      << m.n_revisit_queries << " queries with a revisit < " << pos << " m.\n\n| top-1 | value |\n|---|---|\n"
      << "| top-1 < " << pos << " m / " << pos << "–" << neg << " m (lateral) / > " << neg << " m / no candidate | "
      << c.near << " / " << c.lateral << " / " << c.far << " / " << c.none << " |\n"
-     << "| F1max / EP, a top-1 ≥ " << pos << " m counted false | " << fixed(m.top1.f1_max, 4) << " / "
-     << fixed(m.top1.ep, 4) << " |\n| F1max / EP, lateral top-1 left out | " << fixed(m.top1_no_lateral.f1_max, 4)
-     << " / " << fixed(m.top1_no_lateral.ep, 4) << " |\n| F1max / EP, score_t alone (no lateral check) | "
-     << fixed(m.top1_score_only.f1_max, 4) << " / " << fixed(m.top1_score_only.ep, 4) << " |\n\n"
+     << "| F1max / EP, a top-1 ≥ " << pos << " m counted false | " << f1Ep(m.top1)
+     << " |\n| F1max / EP, lateral top-1 left out | " << f1Ep(m.top1_no_lateral)
+     << " |\n| F1max / EP, score_t alone (no lateral check) | " << f1Ep(m.top1_score_only) << " |\n\n"
      << "A top-1 the detector reports as lateral (its pose puts it ≥ verification.lateral_distance away) is not "
         "claimed as a revisit: score 0 in the first two rows.\n\n";
   return md.str();
@@ -138,13 +161,20 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   curves.emplace_back("top1_score_only", &m.top1_score_only);
   out.text("pr_curve.csv", prCsv(curves));
 
+  // Every frame column holds the frame's name (its file stem, e.g. 000395), as the `frame` column always did.
+  std::map<long, std::string> names;
+  for (const FrameRecord& f : run.frames) names.emplace(f.frame, f.name);
+  const auto name = [&names](long frame) {
+    const auto it = names.find(frame);
+    return it != names.end() ? it->second : std::to_string(frame);
+  };
   std::ostringstream frames;
   frames << "frame,nodes,queried,has_revisit,loop,match,score,match_distance_m,extraction_ms,description_ms,"
             "retrieval_ms,verification_ms,db_bytes,loop_rte_m,loop_rre_deg\n";
   for (const FrameRecord& f : run.frames) {
     const CandidateRecord* best = f.best >= 0 ? &f.candidates[static_cast<size_t>(f.best)] : nullptr;
     frames << f.name << "," << f.num_nodes << "," << f.queried << "," << f.has_revisit << "," << f.is_loop << ","
-           << (best ? std::to_string(best->frame) : "") << "," << (best ? best->score_t : 0.0) << ","
+           << (best ? name(best->frame) : "") << "," << (best ? best->score_t : 0.0) << ","
            << (best ? best->distance : 0.0) << "," << f.timing.extraction_ms << "," << f.timing.description_ms << ","
            << f.timing.retrieval_ms << "," << f.timing.verification_ms << "," << f.db_bytes << ",";
     if (f.is_loop) frames << f.pose_error.translation_m << "," << f.pose_error.rotation_deg;
@@ -157,7 +187,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   pairs << "query,candidate,distance_m,score,score_c,rejection,estimated_distance_m\n";
   for (const FrameRecord& f : run.frames) {
     for (const CandidateRecord& c : f.candidates) {
-      pairs << f.frame << "," << c.frame << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
+      pairs << f.name << "," << name(c.frame) << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
             << rejectionName(c.rejection) << "," << c.estimated_distance << "\n";
     }
   }
@@ -174,10 +204,11 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   std::ostringstream md;
   md << "# Loop-closure evaluation\n\n" << provenance(info);
   md << "## Summary\n\n| metric | value |\n|---|---|\n"
-     << "| F1max (pairwise, positive < " << fixed(main.positive_distance, 0) << " m) | " << fixed(main.f1_max, 4)
-     << " |\n| EP | " << fixed(main.ep, 4) << " |\n| recall at 100 % precision | "
-     << fixed(main.recall_at_100_precision, 4) << " |\n| F1max / EP, top-1 per query | " << fixed(m.top1.f1_max, 4)
-     << " / " << fixed(m.top1.ep, 4) << " |\n| retrieval recall at 15 | " << fixed(m.retrieval_recall, 4)
+     << "| F1max (pairwise, positive < " << fixed(main.positive_distance, 0) << " m) | "
+     << metricText(main.f1_max, main.defined(), 4) << " |\n| EP | " << metricText(main.ep, main.defined(), 4)
+     << " |\n| recall at 100 % precision | " << metricText(main.recall_at_100_precision, main.defined(), 4)
+     << " |\n| F1max / EP, top-1 per query | " << f1Ep(m.top1) << " |\n| retrieval recall at 15 | "
+     << metricText(m.retrieval_recall, m.n_revisit_queries > 0, 4)
      << " |\n| frames / queries / queries with a revisit | " << m.n_frames << " / " << m.n_queries << " / "
      << m.n_revisit_queries << " |\n| scored pairs: positive / negative | " << main.n_positive << " / "
      << main.n_negative << " |\n| detected loops: true / false / 3–20 m | " << m.loops_true << " / "
@@ -186,20 +217,19 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
      << fixed(options.success_rotation, 0) << "°), at any distance: all / false | " << m.loops_pose_correct << " of "
      << m.loops_detected << " / " << m.loops_false_pose_correct << " of " << m.loops_false
      << " |\n| pose success rate of loops within " << fixed(options.pose_max_distance, 0) << " m (RTE < "
-     << fixed(options.success_translation, 0) << " m, RRE < "
-     << fixed(options.success_rotation, 0) << "°) | " << fixed(m.poses.success_rate, 4) << " (" << m.poses.successes
-     << " of " << m.poses.evaluated << ") |\n| RTE / RRE, mean over successes | " << fixed(m.poses.rte_mean, 3)
-     << " m / " << fixed(m.poses.rre_mean, 3) << "° |\n| ms per frame, median / p99 | "
+     << fixed(options.success_translation, 0) << " m, RRE < " << fixed(options.success_rotation, 0) << "°)"
+     << poseRows(m.poses) << "| ms per frame, median / p99 | "
      << fixed(m.ms_per_frame_median, 2) << " / " << fixed(m.ms_per_frame_p99, 2)
-     << " |\n| database bytes per frame | " << fixed(m.db_bytes_per_frame, 0) << " |\n\n";
+     << " |\n| database bytes per frame | " << fixed(m.db_bytes_per_frame, 0) << " |\n"
+     << undefinedParagraph(undefinedMetrics(m)) << "\n";
   if (!run.contiguous) {
     md << "Note: frame numbers are not 0, 1, 2, …; the exclusion gap counted processed frames, not frame numbers.\n\n";
   }
   md << top1Section(m, options) << extra.section;
   md << "## Distance test\n\n| positive < | F1max | EP | positives |\n|---|---|---|---|\n";
   for (const CurveMetrics& c : m.pairwise) {
-    md << "| " << fixed(c.positive_distance, 0) << " m | " << fixed(c.f1_max, 4) << " | " << fixed(c.ep, 4) << " | "
-       << c.n_positive << " |\n";
+    md << "| " << fixed(c.positive_distance, 0) << " m | " << metricText(c.f1_max, c.defined(), 4) << " | "
+       << metricText(c.ep, c.defined(), 4) << " | " << c.n_positive << " |\n";
   }
   md << "\nNegatives are pairs farther than " << fixed(options.negative_distance, 0)
      << " m; pairs in between are left out. No ICP overlap check is applied.\n\n"

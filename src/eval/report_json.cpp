@@ -1,17 +1,22 @@
 #include "sgtllc/eval/report.h"
 
+#include "sgtllc/eval/metric_text.h"
+
 namespace sgtllc::eval {
 namespace {
 
 Json curveJson(const CurveMetrics& c) {
-  return {{"positive_distance_m", c.positive_distance}, {"f1_max", c.f1_max}, {"ep", c.ep},
-          {"recall_at_100_precision", c.recall_at_100_precision}, {"n_positive", c.n_positive},
-          {"n_negative", c.n_negative}};
+  return {{"positive_distance_m", c.positive_distance}, {"f1_max", metricJson(c.f1_max, c.defined())},
+          {"ep", metricJson(c.ep, c.defined())},
+          {"recall_at_100_precision", metricJson(c.recall_at_100_precision, c.defined())},
+          {"n_positive", c.n_positive}, {"n_negative", c.n_negative}};
 }
 
 Json poseJson(const PoseSummary& p) {
-  return {{"evaluated", p.evaluated}, {"successes", p.successes}, {"success_rate", p.success_rate},
-          {"rte_mean_m", p.rte_mean}, {"rre_mean_deg", p.rre_mean}};
+  return {{"evaluated", p.evaluated}, {"successes", p.successes},
+          {"success_rate", metricJson(p.success_rate, p.rateDefined())},
+          {"rte_mean_m", metricJson(p.rte_mean, p.meansDefined())},
+          {"rre_mean_deg", metricJson(p.rre_mean, p.meansDefined())}};
 }
 
 /// The top-1 curve with where the top-1 candidates lie.
@@ -30,14 +35,16 @@ Json sequenceMetricsJson(const SequenceMetrics& m) {
   const CurveMetrics& main = m.pairwise.at(0);
   Json distance_test = Json::array();
   for (const CurveMetrics& c : m.pairwise) distance_test.push_back(curveJson(c));
+  const PoseSummary& p = m.poses;
   return {{"mode", "sequence"},
-          {"f1_max", main.f1_max},
-          {"ep", main.ep},
-          {"recall_at_100_precision", main.recall_at_100_precision},
-          {"retrieval_recall_at_15", m.retrieval_recall},
-          {"rte_mean", m.poses.rte_mean},
-          {"rre_mean", m.poses.rre_mean},
-          {"success_rate", m.poses.success_rate},
+          {"f1_max", metricJson(main.f1_max, main.defined())},
+          {"ep", metricJson(main.ep, main.defined())},
+          {"recall_at_100_precision", metricJson(main.recall_at_100_precision, main.defined())},
+          {"retrieval_recall_at_15", metricJson(m.retrieval_recall, m.n_revisit_queries > 0)},
+          {"rte_mean", metricJson(p.rte_mean, p.meansDefined())},
+          {"rre_mean", metricJson(p.rre_mean, p.meansDefined())},
+          {"success_rate", metricJson(p.success_rate, p.rateDefined())},
+          {"null_reasons", undefinedJson(undefinedMetrics(m))},
           {"n_frames", m.n_frames},
           {"n_queries", m.n_queries},
           {"n_revisit_queries", m.n_revisit_queries},
@@ -62,32 +69,35 @@ Json sequenceMetricsJson(const SequenceMetrics& m) {
 }
 
 Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_t list_limit) {
+  const CurveMetrics& c = m.curve;
+  const PoseSummary& p = m.poses;
   Json out = {{"mode", "pairs"},
-              {"f1_max", m.curve.f1_max},
-              {"ep", m.curve.ep},
-              {"recall_at_100_precision", m.curve.recall_at_100_precision},
+              {"f1_max", metricJson(c.f1_max, c.defined())},
+              {"ep", metricJson(c.ep, c.defined())},
+              {"recall_at_100_precision", metricJson(c.recall_at_100_precision, c.defined())},
               {"n_pairs", m.n_pairs},
               {"n_available", m.n_available},
               {"n_positive", m.curve.n_positive},
               {"n_negative", m.curve.n_negative},
               {"correct", m.correct},
               {"positives_scored_zero", m.positives_scored_zero},
-              {"rte_mean", m.poses.rte_mean},
-              {"rre_mean", m.poses.rre_mean},
-              {"success_rate", m.poses.success_rate},
-              {"poses", poseJson(m.poses)}};
+              {"rte_mean", metricJson(p.rte_mean, p.meansDefined())},
+              {"rre_mean", metricJson(p.rre_mean, p.meansDefined())},
+              {"success_rate", metricJson(p.success_rate, p.rateDefined())},
+              {"null_reasons", undefinedJson(undefinedMetrics(m))},
+              {"poses", poseJson(p)}};
   if (static_cast<size_t>(m.n_available) <= list_limit) {
     Json list = Json::array();
     for (const PairRecord& r : run.pairs) {
       if (!r.available) continue;
-      Json p = {{"query", r.pair.query}, {"candidate", r.pair.candidate}, {"label", r.pair.loop ? 1 : 0},
-                {"loop", r.is_loop},     {"score", r.score_t},           {"score_c", r.score_c},
-                {"rejection", rejectionName(r.rejection)}};
+      Json item = {{"query", r.pair.query}, {"candidate", r.pair.candidate}, {"label", r.pair.loop ? 1 : 0},
+                   {"loop", r.is_loop},     {"score", r.score_t},           {"score_t", r.score_t},
+                   {"score_c", r.score_c},  {"rejection", rejectionName(r.rejection)}};
       if (r.pose_evaluated) {
-        p["rte_m"] = r.pose_error.translation_m;
-        p["rre_deg"] = r.pose_error.rotation_deg;
+        item["rte_m"] = r.pose_error.translation_m;
+        item["rre_deg"] = r.pose_error.rotation_deg;
       }
-      list.push_back(p);
+      list.push_back(item);
     }
     out["pair_results"] = list;
   }

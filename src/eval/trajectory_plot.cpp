@@ -48,8 +48,9 @@ void plotTrajectories(const std::string& path, const TrajectoryPlotData& data) {
     (l.accepted ? accepted : rejected).push_back({a[0], a[1], b[0], b[1]});
   }
 
-  plot::Figure fig(1000, 900);
+  plot::Figure fig(1250, 900);
   fig.title(data.title);
+  fig.legendAt("outside right");  // beside the axes: never over a trajectory
   fig.xlabel("x (m)");
   fig.ylabel(data.cam0_axes ? "z (m)" : "y (m)");
   fig.equalAspect();
@@ -67,6 +68,8 @@ void plotTrajectories(const std::string& path, const TrajectoryPlotData& data) {
   if (!anchor.empty()) {
     const auto s = planar(anchor.front(), data.cam0_axes);
     fig.points({s[0]}, {s[1]}, "start", plot::Color{0.0, 0.0, 0.0}, 6.0);
+  } else {
+    fig.note("no poses");
   }
   fig.savePng(path);
 }

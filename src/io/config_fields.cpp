@@ -283,7 +283,14 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(choice<RetrievalMethod>("retrieval.method", "nearest-neighbour search",
                                       [](Config& c) -> RetrievalMethod& { return c.retrieval.method; },
                                       {{"brute_force", RetrievalMethod::kBruteForce},
-                                       {"kdtree", RetrievalMethod::kKdTree}}));
+                                       {"kdtree", RetrievalMethod::kKdTree},
+                                       {"ivf", RetrievalMethod::kIvf}}));
+  f.push_back(integer<int>("retrieval.ivf_lists", "inverted-file lists (method ivf); 0: 2 sqrt(N)",
+                           [](Config& c) -> int& { return c.retrieval.ivf_lists; }));
+  f.push_back(integer<int>("retrieval.ivf_probe", "inverted-file lists scanned per query (method ivf)",
+                           [](Config& c) -> int& { return c.retrieval.ivf_probe; }));
+  f.push_back(integer<int>("retrieval.ivf_train_frames", "frames stored before the inverted file is trained",
+                           [](Config& c) -> int& { return c.retrieval.ivf_train_frames; }));
   f.push_back(number("association.sigma_1", "σ_1: a slot matches iff cos(u, v) > σ_1",
                      [](Config& c) -> double& { return c.association.sigma_1; }));
   f.push_back(number("association.max_delta_aj", "... and |Δa_j| < this (m²)",

@@ -150,6 +150,12 @@ std::string configToYaml(const Config& config) {
   return out.str();
 }
 
+std::vector<std::pair<std::string, std::string>> configValues(const Config& config) {
+  std::vector<std::pair<std::string, std::string>> values;
+  for (const Field& f : fieldsFor(config.labels)) values.emplace_back(f.key, f.print(config));
+  return values;
+}
+
 Config parseConfig(const std::string& yaml, const std::string& source) {
   YAML::Node root;
   try {

@@ -19,6 +19,9 @@ FilePtr openForReading(const std::string& path) {
 std::string readWholeFile(const std::string& path) {
   FilePtr file = openForReading(path);
   std::string bytes;
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);  // a hint only: one allocation for large files (maps)
+  if (!ec) bytes.reserve(static_cast<size_t>(size));
   char chunk[1 << 16];
   size_t n = 0;
   while ((n = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0) bytes.append(chunk, n);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <memory>
 
 #include "sgtllc/types.h"
 
@@ -108,7 +107,17 @@ void Figure::legendEntry(const std::string& label, Color color, bool as_line) {
   items_.push_back(Item{Kind::kSwatch, {}, {}, {}, {}, label, color, as_line ? 1.0 : 0.0, false});
 }
 
-void Figure::savePng(const std::string& path) const {
+namespace {
+
+void setDash(cairo_t* cr, bool dashed) {
+  const double dash[] = {8.0, 5.0};
+  cairo_set_dash(cr, dash, dashed ? 2 : 0, 0);
+}
+
+}  // namespace
+
+void Figure::render(void* context, double ox, double oy) const {
+  cairo_t* cr = static_cast<cairo_t*>(context);
   // Data ranges.
   Range xr, yr;
   for (const Item& it : items_) {
@@ -128,17 +137,24 @@ void Figure::savePng(const std::string& path) const {
   if (!xfixed_) { const double m = 0.03 * (x1 - x0); x0 -= m; x1 += m; }
   if (!yfixed_) { const double m = 0.03 * (y1 - y0); y0 -= m; y1 += m; }
 
-  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_image_surface_create(CAIRO_FORMAT_RGB24, width_, height_), cairo_surface_destroy);
-  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> ctx(cairo_create(surface.get()), cairo_destroy);
-  cairo_t* cr = ctx.get();
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
+  cairo_save(cr);
+  cairo_translate(cr, ox, oy);
   cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, kFontSize);
 
-  // Plot area inside margins for title, tick labels and axis labels.
-  const double left = 80, right = 25, top = title_.empty() ? 25 : 50, bottom = 65;
+  // The legend lists what the plot shows: labelled items with data, and swatches.
+  std::vector<const Item*> entries;
+  for (const Item& it : items_) {
+    const bool has_data = it.kind == Kind::kSwatch || !it.x.empty() || !it.segs.empty();
+    if (!it.label.empty() && has_data) entries.push_back(&it);
+  }
+  double label_w = 0;
+  for (const Item* it : entries) label_w = std::max(label_w, textWidth(cr, it->label));
+  const double row = kFontSize * 1.5, box_w = label_w + 50, box_h = row * entries.size() + 10;
+  const bool outside = legend_at_.find("outside") != std::string::npos && !entries.empty();
+
+  // Plot area inside margins for title, tick labels and axis labels (and an outside legend).
+  const double left = 80, right = outside ? box_w + 35 : 25, top = title_.empty() ? 25 : 50, bottom = 65;
   double pw = width_ - left - right, ph = height_ - top - bottom;
   double px = left, py = top;
   if (equal_aspect_) {
@@ -185,8 +201,7 @@ void Figure::savePng(const std::string& path) const {
       case Kind::kLine: {
         setColor(cr, it.color);
         cairo_set_line_width(cr, it.size);
-        const double dash[] = {8.0, 5.0};
-        cairo_set_dash(cr, dash, it.dashed ? 2 : 0, 0);
+        setDash(cr, it.dashed);
         for (size_t k = 0; k < it.x.size(); ++k) {
           if (k == 0) cairo_move_to(cr, X(it.x[k]), Y(it.y[k]));
           else cairo_line_to(cr, X(it.x[k]), Y(it.y[k]));
@@ -239,19 +254,17 @@ void Figure::savePng(const std::string& path) const {
     cairo_set_font_size(cr, kFontSize);
   }
 
-  // Legend.
-  std::vector<const Item*> entries;
-  for (const Item& it : items_) {
-    if (!it.label.empty()) entries.push_back(&it);
+  if (!note_.empty()) {
+    cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+    drawText(cr, note_, px + pw / 2, py + ph / 2, 0.5, 0.5);
   }
+
+  // Legend.
   if (!entries.empty()) {
-    double w = 0;
-    for (const Item* it : entries) w = std::max(w, textWidth(cr, it->label));
-    const double row = kFontSize * 1.5, box_w = w + 50, box_h = row * entries.size() + 10;
     const bool at_left = legend_at_.find("left") != std::string::npos;
     const bool at_bottom = legend_at_.find("lower") != std::string::npos;
-    const double bx = at_left ? px + 10 : px + pw - box_w - 10;
-    const double by = at_bottom ? py + ph - box_h - 10 : py + 10;
+    const double bx = outside ? px + pw + 15 : at_left ? px + 10 : px + pw - box_w - 10;
+    const double by = at_bottom && !outside ? py + ph - box_h - 10 : py + (outside ? 0 : 10);
     cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
     cairo_rectangle(cr, bx, by, box_w, box_h);
     cairo_fill_preserve(cr);
@@ -266,9 +279,11 @@ void Figure::savePng(const std::string& path) const {
                            (it.kind == Kind::kSwatch && it.size > 0.5);
       if (as_line) {
         cairo_set_line_width(cr, std::max(2.0, it.kind == Kind::kSwatch ? 2.0 : it.size));
+        setDash(cr, it.dashed);
         cairo_move_to(cr, bx + 8, cy);
         cairo_line_to(cr, bx + 36, cy);
         cairo_stroke(cr);
+        setDash(cr, false);
       } else {
         cairo_arc(cr, bx + 22, cy, 5, 0, 2 * M_PI);
         cairo_fill(cr);
@@ -277,11 +292,7 @@ void Figure::savePng(const std::string& path) const {
       drawText(cr, it.label, bx + 44, cy, 0.0, 0.5);
     }
   }
-
-  cairo_surface_flush(surface.get());
-  if (cairo_surface_write_to_png(surface.get(), path.c_str()) != CAIRO_STATUS_SUCCESS) {
-    throw Error("cannot write " + path + " (PNG)");
-  }
+  cairo_restore(cr);
 }
 
 }  // namespace sgtllc::plot

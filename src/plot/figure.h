@@ -29,10 +29,14 @@ class Figure {
   void ylim(double lo, double hi);
   /// One metre (unit) is as long on both axes: for maps and bird's-eye views.
   void equalAspect(bool on = true) { equal_aspect_ = on; }
-  /// Where the legend box goes: "upper right", "upper left", "lower right", "lower left".
+  /// Where the legend box goes: "upper right", "upper left", "lower right", "lower left" (inside the axes), or
+  /// "outside right" (beside them, so that it never covers data).
   void legendAt(std::string where) { legend_at_ = std::move(where); }
+  /// A line of text in the middle of the axes, e.g. why a plot is empty ("no positives in this sequence").
+  void note(std::string text) { note_ = std::move(text); }
 
-  /// A polyline. An empty label keeps it out of the legend.
+  /// A polyline. An empty label keeps it out of the legend, and so does an empty series (a legend lists only what
+  /// the plot shows); a dashed line has a dashed legend swatch.
   void line(const std::vector<double>& x, const std::vector<double>& y, const std::string& label, Color color,
             double width = 2.0, bool dashed = false);
   /// Filled circles of one colour.
@@ -50,6 +54,11 @@ class Figure {
   /// Renders and writes a PNG; throws sgtllc::Error naming the file if it cannot be written.
   void savePng(const std::string& path) const;
 
+  int width() const { return width_; }
+  int height() const { return height_; }
+  /// Draws the figure with its top-left corner at (@p x, @p y) of @p cr (a cairo_t*, kept opaque here).
+  void render(void* cr, double x, double y) const;
+
  private:
   enum class Kind { kLine, kPoints, kColoredPoints, kSegments, kSwatch };
   struct Item {
@@ -64,10 +73,14 @@ class Figure {
   };
 
   int width_, height_;
-  std::string title_, xlabel_, ylabel_, legend_at_ = "upper right";
+  std::string title_, xlabel_, ylabel_, legend_at_ = "upper right", note_;
   bool xfixed_ = false, yfixed_ = false, equal_aspect_ = false;
   double x0_ = 0, x1_ = 1, y0_ = 0, y1_ = 1;
   std::vector<Item> items_;
 };
+
+/// Writes @p panels side by side into one PNG (as tall as the tallest); throws sgtllc::Error naming the file if it
+/// cannot be written.
+void savePngRow(const std::string& path, const std::vector<const Figure*>& panels);
 
 }  // namespace sgtllc::plot

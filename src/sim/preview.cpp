@@ -102,7 +102,7 @@ void writeTrajectoryPreview(const std::string& path, const Simulator& sim,
                             const std::vector<Eigen::Matrix4d>& lidar_poses, const std::vector<LoopPair>& pairs,
                             io::Overwrite overwrite) {
   plot::Figure fig(1400, 1400);
-  const Eigen::Matrix4d to0 = sim.poses()[0].T_world_lidar.inverse();
+  const Eigen::Matrix4d to0 = sim.T_world_origin().inverse();
   auto local = [&](const Eigen::Vector2d& w) {
     const Eigen::Vector4d p = to0 * Eigen::Vector4d(w.x(), w.y(), 0.0, 1.0);
     return Eigen::Vector2d(p.x(), p.y());
@@ -115,6 +115,15 @@ void writeTrajectoryPreview(const std::string& path, const Simulator& sim,
     }
   }
   fig.segments(roads, "roads", rgb(215, 215, 215), 6.0);
+  if (sim.isSecondSession()) {
+    std::vector<double> fx, fy;
+    for (const Eigen::Matrix4d& T : sim.firstSessionPoses()) {
+      const Eigen::Vector2d p = local(T.topRightCorner<2, 1>());
+      fx.push_back(p.x());
+      fy.push_back(p.y());
+    }
+    fig.line(fx, fy, "first session", rgb(150, 190, 235), 5.0);
+  }
   // The route in runs of one visit kind.
   const int n = static_cast<int>(lidar_poses.size());
   std::map<VisitKind, bool> labelled;
@@ -146,11 +155,17 @@ void writeTrajectoryPreview(const std::string& path, const Simulator& sim,
     qy.push_back(lidar_poses[p.query](1, 3));
   }
   fig.points(qx, qy, "frames with a loop within 3 m", rgb(0, 0, 0), 1.6);
-  fig.points({0.0}, {0.0}, "start", rgb(230, 0, 0), 6.0);
-  fig.title(std::string("simulated ") + sceneName(sim.config().scene) + " sequence: " + std::to_string(n) +
+  // A first session starts at the origin by construction; a second one wherever it is in the first one's frame.
+  const bool second = sim.isSecondSession() && n > 0;
+  fig.points({second ? lidar_poses[0](0, 3) : 0.0}, {second ? lidar_poses[0](1, 3) : 0.0}, "start", rgb(230, 0, 0),
+             6.0);
+  fig.title(std::string("simulated ") + sceneName(sim.config().scene) +
+            (sim.isSecondSession() ? " second session: " : " sequence: ") + std::to_string(n) +
             " frames, " + std::to_string(qx.size()) + " loop queries");
-  fig.xlabel("x (m, frame 0)");
-  fig.ylabel("y (m, frame 0)");
+  // A second session's poses are in its first session's frame 0.
+  const std::string frame = sim.isSecondSession() ? "first session's frame 0" : "frame 0";
+  fig.xlabel("x (m, " + frame + ")");
+  fig.ylabel("y (m, " + frame + ")");
   fig.equalAspect();
   fig.legendAt("upper left");
   // Frame the route, not the whole road network.

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "sgtllc/sim/rng.h"
+#include "sgtllc/types.h"
 
 namespace sgtllc::sim {
 namespace {
@@ -14,19 +15,63 @@ constexpr double kMinRevisit = 80.0;     // m: shortest planned revisit
 constexpr double kRevisitShare = 0.3;    // of the route spent on planned revisits (transfers come on top)
 constexpr double kRecentGuard = 100.0;   // m: a revisit's source ends at least this far back along the route
 constexpr double kMinLaneShift = 3.3;    // m: lateral shift per lane of a lane-shift revisit
+// A second session (planSecondRoute): stretches along the first session's roads, then away from them.
+constexpr double kFollowStretch = 350.0;  // m
+constexpr double kFreshStretch = 250.0;   // m
+constexpr double kFreshStart = 150.0;     // m: it starts at least this far from the first session's start if it can
+constexpr double kPhaseBias = 8.0;        // weight of a road that suits the current stretch over one that does not
 
 /// A directed edge: 2·edge + (forward ? 0 : 1).
 int directed(int edge, bool forward) { return 2 * edge + (forward ? 0 : 1); }
 
 class Planner {
  public:
-  Planner(const RoadNetwork& net, uint64_t seed) : net_(net), rng_(seed, Stream::kRoute), visits_(net.edges().size()) {
-    // Start at a random intersection away from the border when there is one.
+  /// @p prior: the first session, for a second session's route (null for a first session).
+  Planner(const RoadNetwork& net, uint64_t seed, const PriorRoute* prior = nullptr)
+      : net_(net), rng_(seed, Stream::kRoute), visits_(net.edges().size()) {
+    // Start at a random intersection away from the border when there is one (and away from where the first
+    // session started, so the second one's start differs).
     std::vector<int> inner;
     for (size_t n = 0; n < net.nodes().size(); ++n) {
-      if (net.nodes()[n].edges.size() >= 4) inner.push_back(static_cast<int>(n));
+      const bool fresh = !prior || (net.nodes()[n].p - prior->start).norm() >= kFreshStart;
+      if (net.nodes()[n].edges.size() >= 4 && fresh) inner.push_back(static_cast<int>(n));
+    }
+    if (prior && inner.empty()) {
+      for (size_t n = 0; n < net.nodes().size(); ++n) {
+        if (net.nodes()[n].edges.size() >= 4) inner.push_back(static_cast<int>(n));
+      }
     }
     node_ = inner.empty() ? 0 : inner[rng_.uniformInt(0, static_cast<int>(inner.size()) - 1)];
+    if (prior) {
+      known_.assign(net.edges().size(), 0);
+      for (const Leg& leg : prior->legs) known_[leg.edge] = 1;
+    }
+  }
+
+  /// A second session's stretch along the first session's roads: to the cheapest one not driven yet in this
+  /// session, then on, preferring its roads, until @p length metres are driven.
+  void follow(double length) {
+    follow_ = true;
+    const double goal = length_ + length;
+    const std::vector<double> cost = costsFromHere();
+    int target = -1;
+    for (size_t d = 0; d < cost.size(); ++d) {
+      const int e = static_cast<int>(d / 2);
+      if (known_[e] && visits_[e] == 0 && std::isfinite(cost[d]) && (target < 0 || cost[d] < cost[target])) {
+        target = static_cast<int>(d);
+      }
+    }
+    if (target >= 0) {
+      transferTo(target);
+      drive(Leg{target / 2, target % 2 == 0, 0.0, VisitKind::kExplore, -1}, true);
+    }
+    if (length_ < goal) explore(goal - length_);
+  }
+
+  /// A second session's stretch preferring roads the first session never drove.
+  void leave(double length) {
+    follow_ = false;
+    explore(length);
   }
 
   void explore(double length) {
@@ -39,7 +84,7 @@ class Planner {
         const int e = options[k];
         if (e == last_edge_ && options.size() > 1) continue;  // no U-turns
         const double turn = turnCosine(e);
-        weight[k] = (visits_[e] == 0 ? 6.0 : 1.0) * (1.5 + turn);
+        weight[k] = (visits_[e] == 0 ? 6.0 : 1.0) * (1.5 + turn) * phaseBias(e);
         total += weight[k];
       }
       double pick = rng_.uniform(0.0, total);
@@ -124,6 +169,13 @@ class Planner {
     return t_in.dot(t_out);
   }
 
+  /// 1 for a first session; for a second one, favours the first session's roads while following them and the
+  /// others while away from them.
+  double phaseBias(int e) const {
+    if (known_.empty()) return 1.0;
+    return (known_[e] != 0) == follow_ ? kPhaseBias : 1.0;
+  }
+
   bool suits(VisitKind kind, const Leg& leg) const {
     const RoadEdge& e = net_.edges()[leg.edge];
     if (kind == VisitKind::kLaneShift2) return e.avenue;
@@ -195,6 +247,8 @@ class Planner {
   std::vector<int> prev_;
   int node_ = 0, last_edge_ = -1;
   double length_ = 0.0;
+  std::vector<char> known_;  ///< second session: per edge, driven by the first session (empty for a first session)
+  bool follow_ = false;      ///< second session: following the first session's roads (else away from them)
 };
 
 }  // namespace
@@ -246,6 +300,22 @@ std::vector<Leg> planRoute(const RoadNetwork& net, double length, int revisits, 
   }
   // Spare road at the end: driving speed is only known once the path is smoothed.
   planner.explore(std::max(0.0, 1.2 * length + 100.0 - planner.length()));
+  return planner.legs();
+}
+
+std::vector<Leg> planSecondRoute(const RoadNetwork& net, double length, const PriorRoute& prior, uint64_t seed) {
+  for (const Leg& leg : prior.legs) {
+    if (leg.edge < 0 || leg.edge >= static_cast<int>(net.edges().size())) {
+      throw Error("the first session's route does not belong to this road network");
+    }
+  }
+  Planner planner(net, seed, &prior);
+  // Spare road at the end, as planRoute leaves.
+  const double goal = 1.2 * length + 100.0;
+  while (planner.length() < goal) {
+    planner.follow(kFollowStretch);
+    if (planner.length() < goal) planner.leave(kFreshStretch);
+  }
   return planner.legs();
 }
 

@@ -15,6 +15,8 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/node_extraction.h"
+#include "sgtllc/sim/cross_session.h"
+#include "sgtllc/sim/manifest.h"
 #include "sgtllc/sim/odometry.h"
 #include "sgtllc/parallel.h"
 #include "sgtllc/sim/preview.h"
@@ -117,7 +119,7 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   // Poses in the KITTI convention: cam0 of frame i in cam0 of frame 0, P_i = Tr · T_lidar0_lidari · Tr⁻¹.
   const Eigen::Matrix4d Tr = io::kittiVelodyneToCam0();
   const Eigen::Matrix4d Tr_inv = Tr.inverse();
-  const Eigen::Matrix4d world_to_0 = sim.poses()[0].T_world_lidar.inverse();
+  const Eigen::Matrix4d world_to_0 = sim.T_world_origin().inverse();  // a second session: the first one's frame 0
   std::vector<Eigen::Matrix4d> lidar0(n), cam(n);
   std::vector<double> times(n);
   for (int i = 0; i < n; ++i) {
@@ -125,6 +127,8 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
     cam[i] = Tr * lidar0[i] * Tr_inv;
     times[i] = sim.poses()[i].time;
   }
+  SequenceStats stats;
+  writeManifest(dir, sim.config(), overwrite);
   io::writeKittiCalib(dir + "/calib.txt", io::kittiProjections(), Tr, overwrite);
   io::writeKittiPoses(dir + "/poses.txt", cam, overwrite);
   const std::vector<Eigen::Matrix4d> odometry = driftingOdometry(lidar0, options.odometry, sim.config().seed);
@@ -137,8 +141,18 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   const std::vector<Eigen::Matrix4d> lidar = readBackLidarPoses(dir);
   const std::vector<LoopPair> pairs = loopPairs(lidar, pair_options);
   writeLoopPairs(dir + "/loop_pairs.txt", pairs, overwrite);
+  if (sim.isSecondSession()) {
+    std::vector<Eigen::Vector3d> first, second;
+    for (const Eigen::Matrix4d& T : sim.firstSessionPoses()) first.push_back((world_to_0 * T).topRightCorner<3, 1>());
+    for (const Eigen::Matrix4d& T : lidar0) second.push_back(T.topRightCorner<3, 1>());
+    const std::vector<NearestFrame> nearest = nearestFrames(first, second);
+    writeCrossSession(dir + "/" + kCrossSessionName, nearest, overwrite);
+    for (const NearestFrame& f : nearest) {
+      stats.cross_near += f.distance <= pair_options.positive_distance;
+      stats.cross_far += f.distance > pair_options.negative_distance;
+    }
+  }
 
-  SequenceStats stats;
   stats.frames = n;
   for (int i = 1; i < n; ++i) {
     stats.path_length += (lidar0[i].topRightCorner<3, 1>() - lidar0[i - 1].topRightCorner<3, 1>()).norm();

@@ -22,6 +22,24 @@ const SimConfig& validated(const SimConfig& config) {
   return config;
 }
 
+TrajectoryConfig trajectoryConfig(const SimConfig& config) {
+  const ScenePreset preset = scenePreset(config.scene);
+  TrajectoryConfig drive;
+  drive.frames = config.frames;
+  drive.period = kPeriod;
+  drive.sensor_height = config.sensor_height;
+  drive.speed_min = preset.speed_min;
+  drive.speed_max = preset.speed_max;
+  drive.seed = config.seed;
+  return drive;
+}
+
+/// Route length the frames need: turns slow the vehicle down, so expect ~85 % of the mean cruise speed.
+double expectedLength(const SimConfig& config) {
+  const ScenePreset preset = scenePreset(config.scene);
+  return config.frames * kPeriod * 0.85 * 0.5 * (preset.speed_min + preset.speed_max);
+}
+
 }  // namespace
 
 void SimConfig::validate() const {
@@ -40,6 +58,18 @@ void SimConfig::validate() const {
   if (!(sensor.range_noise >= 0.0) || !(sensor.dropout >= 0.0 && sensor.dropout < 1.0)) {
     throw Error("sensor noise settings are invalid");
   }
+  if (world_of) {
+    if (world_of->world_of) throw Error("the first session of a second session must not be a second session itself");
+    if (world_of->scene != scene) {
+      throw Error(std::string("a second session drives in its first session's scene (") + sceneName(world_of->scene) +
+                  "), not " + sceneName(scene));
+    }
+    if (world_of->seed == seed) {
+      throw Error("a second session needs a seed other than its first session's (" + std::to_string(seed) +
+                  "): the seed draws the traffic, the route and the noise");
+    }
+    world_of->validate();
+  }
 }
 
 int SimConfig::scansPerFrame() const {
@@ -48,20 +78,18 @@ int SimConfig::scansPerFrame() const {
 }
 
 int SimConfig::plannedRevisits() const {
+  if (world_of) return 0;  // a second session's route plans none (planSecondRoute)
   return revisits >= 0 ? revisits : std::max(1, static_cast<int>(std::lround(frames / 500.0)));
 }
 
 Simulator::Simulator(const SimConfig& config) : config_(validated(config)), sensor_(config_.sensor) {
+  if (config.world_of) {
+    driveSecondSession();
+    return;
+  }
   const ScenePreset preset = scenePreset(config.scene);
-  TrajectoryConfig drive;
-  drive.frames = config.frames;
-  drive.period = kPeriod;
-  drive.sensor_height = config.sensor_height;
-  drive.speed_min = preset.speed_min;
-  drive.speed_max = preset.speed_max;
-  drive.seed = config.seed;
-  // Turns slow the vehicle down: expect ~85 % of the mean cruise speed.
-  double length = config.frames * kPeriod * 0.85 * 0.5 * (preset.speed_min + preset.speed_max);
+  const TrajectoryConfig drive = trajectoryConfig(config);
+  double length = expectedLength(config);
   for (int attempt = 0; attempt < kPlanAttempts; ++attempt, length *= 1.5) {
     WorldConfig wc;
     wc.preset = preset;
@@ -71,9 +99,34 @@ Simulator::Simulator(const SimConfig& config) : config_(validated(config)), sens
     world_ = generateWorld(wc);
     route_ = planRoute(world_.roads, length, config.plannedRevisits(), config.seed);
     poses_ = driveRoute(world_, route_, drive);
-    if (numFrames() == config.frames) return;
+    if (numFrames() == config.frames) {
+      T_world_origin_ = poses_[0].T_world_lidar;
+      return;
+    }
   }
   throw Error("could not plan a route long enough for " + std::to_string(config.frames) + " frames");
+}
+
+void Simulator::driveSecondSession() {
+  const Simulator first(*config_.world_of);
+  WorldConfig wc = first.world().config;
+  wc.traffic_seed = config_.seed;
+  world_ = generateWorld(wc);
+  T_world_origin_ = first.T_world_origin();
+  // The day after: every change of the first session (parked cars gone, trees cut back) has happened.
+  world_time_offset_ = first.numFrames() * kPeriod;
+  for (const FramePose& p : first.poses()) first_poses_.push_back(p.T_world_lidar);
+  PriorRoute prior;
+  prior.legs = first.route();
+  prior.start = first.poses()[0].T_world_lidar.topRightCorner<2, 1>();
+  const TrajectoryConfig drive = trajectoryConfig(config_);
+  double length = expectedLength(config_);
+  for (int attempt = 0; attempt < kPlanAttempts; ++attempt, length *= 1.5) {
+    route_ = planSecondRoute(world_.roads, length, prior, config_.seed);
+    poses_ = driveRoute(world_, route_, drive);
+    if (numFrames() == config_.frames) return;
+  }
+  throw Error("could not plan a second session long enough for " + std::to_string(config_.frames) + " frames");
 }
 
 int Simulator::firstScan(int i) const { return std::max(0, i - config_.scansPerFrame() + 1); }
@@ -81,7 +134,7 @@ int Simulator::firstScan(int i) const { return std::max(0, i - config_.scansPerF
 SimScan Simulator::scan(int j) const {
   if (j < 0 || j >= numFrames()) throw Error("scan " + std::to_string(j) + " is out of range");
   const FramePose& pose = poses_[j];
-  RawScan raw = castScan(world_, sensor_, pose.T_world_lidar, pose.time, j, config_.seed);
+  RawScan raw = castScan(world_, sensor_, pose.T_world_lidar, pose.time + world_time_offset_, j, config_.seed);
   SimScan out;
   out.labels = predictLabels(raw, config_.label_noise, config_.seed, j);
   out.true_labels = trueLabels(raw);

@@ -64,7 +64,7 @@ void vehiclePrimitives(std::vector<Primitive>& out, const Eigen::Vector2d& xy, d
 }
 
 void placeParkedVehicles(WorldBuilder& b) {
-  Rng rng(b.world.config.seed, Stream::kVehicles);
+  Rng rng(b.world.config.trafficSeed(), Stream::kVehicles);
   const ScenePreset& p = b.preset;
   const RoadNetwork& net = b.world.roads;
   constexpr ZoneMask kParkingZones = zoneBit(Zone::kParking);
@@ -100,7 +100,7 @@ void placeParkedVehicles(WorldBuilder& b) {
 }
 
 void placeAgents(WorldBuilder& b) {
-  Rng rng(b.world.config.seed, Stream::kAgents);
+  Rng rng(b.world.config.trafficSeed(), Stream::kAgents);
   const ScenePreset& p = b.preset;
   const auto& edges = b.world.roads.edges();
   for (size_t ei = 0; ei < edges.size(); ++ei) {

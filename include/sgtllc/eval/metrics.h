@@ -60,6 +60,10 @@ struct PoseSummary {
   double success_rate = 0.0;    ///< successes / evaluated (0 if none)
   double rte_mean = 0.0;        ///< mean RTE over successes (m)
   double rre_mean = 0.0;        ///< mean RRE over successes (deg)
+  /// The rate needs an evaluated pose and the means a success; otherwise they are undefined (reported as
+  /// `n/a` / `null`; the fields hold 0).
+  bool rateDefined() const { return evaluated > 0; }
+  bool meansDefined() const { return successes > 0; }
 };
 
 PoseSummary summarisePoses(const std::vector<PoseError>& errors, double max_translation_m = 2.0,

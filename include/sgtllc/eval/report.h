@@ -22,6 +22,11 @@ struct ReportInfo {
   std::string command;        ///< the command line that produced it
   std::string config_yaml;    ///< the full configuration used
   std::string data_note;      ///< e.g. which data this is (real KITTI, simulated, ...)
+  std::string software;       ///< e.g. "sgtllc 0.1.0, commit 0158456abcde" (a report line if not empty)
+  /// When and where it ran: the only report.md lines that differ between two runs of the same command, apart
+  /// from the measured times (each a report line if not empty).
+  std::string date;
+  std::string machine;
 };
 
 /// What a caller adds to a sequence report, e.g. the trajectory errors of `sgtllc eval --odometry`.

@@ -81,6 +81,9 @@ struct CurveMetrics {
   double recall_at_100_precision = 0.0;
   int n_positive = 0;
   int n_negative = 0;
+  /// F1max, EP and recall need positives (the recall denominator, curve.positives): without any they are
+  /// undefined, reported as `n/a` / `null`, never as 0 (their fields then hold 0).
+  bool defined() const { return curve.positives > 0; }
 };
 
 /// Where the queries' top-1 candidates lie (the top-1 protocol's samples, by ground-truth distance).
@@ -109,6 +112,7 @@ struct SequenceMetrics {
   int n_queries = 0;                   ///< frames that were queried
   int n_revisit_queries = 0;           ///< queried frames with a true revisit (main positive distance)
   double retrieval_recall = 0.0;       ///< share of revisit queries with a true match among their candidates
+                                       ///< (undefined, 0, without revisit queries)
   int loops_detected = 0;
   int loops_true = 0;                  ///< detected loops whose match is within the main positive distance
   int loops_false = 0;                 ///< detected loops whose match is beyond the negative distance

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "sgtllc/config.h"
 
@@ -10,6 +12,10 @@ namespace sgtllc::io {
 
 /// The whole configuration as commented YAML, in the format loadConfig reads (what `sgtllc config` prints).
 std::string configToYaml(const Config& config);
+
+/// Every configuration key with its value as configToYaml prints it (`{"graph.sigma_d", "30"}`, …), in print
+/// order: the canonical text form a map file's configuration section stores (docs/map-format.md).
+std::vector<std::pair<std::string, std::string>> configValues(const Config& config);
 
 /// Applies the keys of a YAML document to the defaults; omitted keys keep their default values. Throws
 /// sgtllc::Error naming @p source, the line and the key for malformed YAML, an unknown key, a value of the wrong

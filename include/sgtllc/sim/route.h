@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "sgtllc/sim/road_network.h"
 
 namespace sgtllc::sim {
@@ -38,6 +40,18 @@ double defaultOffset(const RoadProfile& profile);
 /// them: each is at least 80 m). Every round of four revisits drives each kind (same direction, opposite, one and
 /// two lanes aside) once, the one whose stretch is cheapest to reach first; two lanes need an avenue.
 std::vector<Leg> planRoute(const RoadNetwork& net, double length, int revisits, uint64_t seed);
+
+/// What a second session's planner knows of the first session through the same world.
+struct PriorRoute {
+  std::vector<Leg> legs;                           ///< the first session's route
+  Eigen::Vector2d start = Eigen::Vector2d::Zero();  ///< where it started (world xy)
+};
+
+/// A second session's route of at least @p length metres through the network @p prior was driven on: it starts at
+/// an intersection away from the first session's start, then alternates stretches along roads the first session
+/// drove (either direction: the relocalization positives) and stretches of roads it never drove (the negatives),
+/// about kFollowStretch and kFreshStretch metres each (route.cpp). No planned revisits of its own.
+std::vector<Leg> planSecondRoute(const RoadNetwork& net, double length, const PriorRoute& prior, uint64_t seed);
 
 /// Length of a leg (m).
 inline double legLength(const RoadNetwork& net, const Leg& leg) { return net.edges()[leg.edge].length(); }

@@ -4,7 +4,10 @@
 /// DIR/velodyne/%06d.bin, DIR/labels/%06d.label, DIR/poses.txt (cam0 poses, KITTI convention), DIR/calib.txt
 /// (KITTI 00's P0–P3 and Tr), DIR/times.txt, DIR/loop_pairs.txt (`query candidate label`, 1 = within 3 m, 0 = farther
 /// than 20 m), DIR/odometry.txt (a drifting odometry estimate in the format and frame of poses.txt; odometry.h),
-/// and two bird's-eye-view PNGs. Only these files are written; nothing is ever deleted.
+/// DIR/simulation.txt (the settings, so a second session can rebuild the world; manifest.h), a second session's
+/// DIR/cross_session.txt (the nearest first-session frame of each frame; cross_session.h) and two bird's-eye-view
+/// PNGs. Only these files are written; nothing is ever deleted. A second session's poses (and odometry) are in the
+/// first session's frame 0, so its poses.txt does not start at the identity.
 #pragma once
 
 #include <array>
@@ -44,6 +47,8 @@ struct SequenceStats {
   std::vector<double> lane_shift_offsets;         ///< frames on lane-shift revisits: distance to the nearest earlier frame (m)
   double path_length = 0.0;          ///< distance driven, sum of the frame-to-frame LiDAR displacements (m)
   double odometry_end_error = 0.0;   ///< odometry.txt's LiDAR position error at the last frame (m)
+  int cross_near = 0;  ///< second session: frames with a first-session frame within 3 m (relocalization positives)
+  int cross_far = 0;   ///< second session: frames with none within 20 m (where a relocalization is false)
 };
 
 /// Refuses a path that is a file, or a folder that is not empty unless @p force; touches nothing.

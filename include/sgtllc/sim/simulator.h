@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,12 +27,17 @@ struct SimConfig {
   double label_noise = kDefaultLabelNoise;  ///< segmentation error rate R (0 = ground-truth labels)
   int revisits = -1;                        ///< planned revisits; −1 = one per 500 frames (at least one)
   double sensor_height = 1.73;              ///< m above the road
+  /// A second session (docs/relocalization.md): drive through the world of this earlier, first session — its
+  /// streets, buildings and vegetation as they were at its end; parked and moving vehicles and people drawn anew
+  /// from `seed`, as are the route, the start and the noise — with poses in the first session's frame 0. The
+  /// scene must match; the first session may not itself be a second one. Null = a world of its own.
+  std::shared_ptr<const SimConfig> world_of;
 
   /// Throws sgtllc::Error naming the first bad field.
   void validate() const;
   /// Raw scans per frame after defaults are applied.
   int scansPerFrame() const;
-  /// Planned revisits after defaults are applied.
+  /// Planned revisits after defaults are applied (0 for a second session, whose route plans none).
   int plannedRevisits() const;
 };
 
@@ -53,7 +59,8 @@ struct SimScan {
 
 class Simulator {
  public:
-  /// Generates the world, plans the route and drives it (about a second for a 2,000-frame urban sequence).
+  /// Generates the world, plans the route and drives it (about a second for a 2,000-frame urban sequence; a
+  /// second session first rebuilds its first session, about twice that).
   explicit Simulator(const SimConfig& config);
 
   const SimConfig& config() const { return config_; }
@@ -63,6 +70,11 @@ class Simulator {
   /// One pose per frame (size() == config().frames).
   const std::vector<FramePose>& poses() const { return poses_; }
   int numFrames() const { return static_cast<int>(poses_.size()); }
+  /// The frame the written poses are in: LiDAR frame 0 of this session, or of the first one for a second session.
+  const Eigen::Matrix4d& T_world_origin() const { return T_world_origin_; }
+  bool isSecondSession() const { return config_.world_of != nullptr; }
+  /// Second session: the first session's LiDAR poses T_world_lidar, one per frame (empty for a first session).
+  const std::vector<Eigen::Matrix4d>& firstSessionPoses() const { return first_poses_; }
 
   /// Frame @p i: raw scans max(0, i − scansPerFrame() + 1) … i merged in the LiDAR frame of frame i (so the first
   /// frames of an accumulating sensor hold fewer scans). Pure and thread-safe: any thread may compute any frame.
@@ -76,11 +88,16 @@ class Simulator {
   SimFrame merge(int i, const std::vector<const SimScan*>& scans) const;
 
  private:
+  void driveSecondSession();
+
   SimConfig config_;
   SensorModel sensor_;
   World world_;
   std::vector<Leg> route_;
   std::vector<FramePose> poses_;
+  Eigen::Matrix4d T_world_origin_ = Eigen::Matrix4d::Identity();
+  double world_time_offset_ = 0.0;  ///< s added to a frame's time when it looks at the world (second session)
+  std::vector<Eigen::Matrix4d> first_poses_;
 };
 
 }  // namespace sgtllc::sim

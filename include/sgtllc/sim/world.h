@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sgtllc/sim/bvh.h"
@@ -46,6 +47,11 @@ struct WorldConfig {
   uint64_t seed = 1;
   int blocks_x = 4, blocks_y = 4;  ///< grid size of the road network
   double duration = 100.0;         ///< seconds the sequence lasts (sets when changes between visits happen)
+  /// Seeds the parked and moving vehicles and the people; unset = seed. A second session through the same world
+  /// sets its own (docs/relocalization.md): the streets, buildings and trees stay, the traffic does not.
+  std::optional<uint64_t> traffic_seed;
+
+  uint64_t trafficSeed() const { return traffic_seed.value_or(seed); }
 };
 
 struct World {

@@ -1,0 +1,36 @@
+// `--accumulate N` of `run` and `eval` (issue 14): each frame merged with the N − 1 raw scans before it, moved by
+// the --odometry poses or by the sequence's poses.txt, before node extraction (accumulate/scan_accumulator.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "common.h"
+#include "loop_closing.h"
+#include "sgtllc/eval/frame_source.h"
+
+namespace sgtllc::cli {
+
+/// Adds `--accumulate N` to @p cmd (1 = off, the default).
+void addAccumulateOption(CLI::App& cmd, int& scans);
+
+/// With @p scans > 1, makes @p source accumulate: by @p odometry's poses if given (the --odometry file, read once
+/// for the back end too), else by SEQ_DIR/poses.txt read through @p calib (default SEQ_DIR/calib.txt). Throws
+/// sgtllc::Error naming the file if it is missing, malformed or has not one pose per frame, or if poses.txt is a
+/// KITTI file with no calib to bring its cam0 poses into the LiDAR frame.
+void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
+                       const std::string& calib);
+
+/// What accumulation cost over a run: merge time per frame and the largest buffer.
+struct AccumulationCost {
+  std::vector<double> ms;   ///< per frame
+  size_t max_bytes = 0;     ///< ScanAccumulator::bytes, largest over the run
+
+  void add(const eval::LoadedFrame& frame);
+  Json json(int scans) const;
+  std::string text(int scans) const;
+};
+
+}  // namespace sgtllc::cli

@@ -1,0 +1,76 @@
+// `sgtllc map info MAP`: what a map file holds (docs/map-format.md).
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "common.h"
+#include "sgtllc/map/map_file.h"
+
+namespace sgtllc::cli {
+namespace {
+
+std::string hex(uint64_t v) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+  return text;
+}
+
+void mapInfo(const std::string& path, bool json) {
+  map::MapLayout layout;
+  const map::Map m = map::readMapFile(path, &layout);
+  size_t nodes = 0;
+  for (int f = 0; f < m.size(); ++f) nodes += m.database.nodes(f).size();
+  const double per_frame = m.size() ? static_cast<double>(layout.file_bytes) / m.size() : 0.0;
+  if (json) {
+    Json sections = Json::array();
+    for (const map::SectionInfo& s : layout.sections) {
+      sections.push_back({{"tag", s.tag}, {"version", s.version}, {"bytes", s.bytes}, {"known", s.known}});
+    }
+    Json config = Json::object();
+    for (const auto& [key, value] : m.config) config[key] = value;
+    std::cout << jsonText({{"map", path},
+                           {"format_version", layout.format_version},
+                           {"bytes", layout.file_bytes},
+                           {"frames", m.size()},
+                           {"poses", m.hasPoses()},
+                           {"nodes", nodes},
+                           {"key_length", m.size() ? m.database.globalDimension() : 0},
+                           {"bytes_per_frame", per_frame},
+                           {"config_fingerprint", hex(layout.fingerprint)},
+                           {"sections", sections},
+                           {"config", config}})
+              << "\n";
+    return;
+  }
+  std::cout << "map " << path << ": format version " << layout.format_version << ", " << layout.file_bytes
+            << " bytes\n"
+            << "frames " << m.size() << " (" << (m.hasPoses() ? "with poses" : "no poses") << ")";
+  if (m.size() > 0) {
+    std::cout << ", first " << m.names.front() << ", last " << m.names.back() << "\n"
+              << "nodes " << nodes << " (" << fixed(static_cast<double>(nodes) / m.size(), 1) << " per frame), key "
+              << m.database.globalDimension() << " floats, " << fixed(per_frame, 0) << " bytes per frame";
+  }
+  std::cout << "\nconfiguration fingerprint " << hex(layout.fingerprint) << "\nsections:\n";
+  for (const map::SectionInfo& s : layout.sections) {
+    std::cout << "  " << s.tag << " v" << s.version << "  " << s.bytes << " bytes"
+              << (s.known ? "" : "  (not known to this version: skipped)") << "\n";
+  }
+  std::cout << "configuration (these must equal a localize or resume configuration's):\n";
+  for (const auto& [key, value] : m.config) std::cout << "  " << key << ": " << value << "\n";
+}
+
+}  // namespace
+
+void addMapCommand(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("map", "Inspect map files (`sgtllc run --save-map`)");
+  cmd->require_subcommand(1);
+  auto path = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
+  CLI::App* info = cmd->add_subcommand("info", "Print what a map holds: version, frames, poses, configuration, sections");
+  info->add_option("MAP", *path, "map file")->required();
+  info->add_flag("--json", *json, "print it as one JSON object");
+  info->callback([path, json] { mapInfo(*path, *json); });
+}
+
+}  // namespace sgtllc::cli

@@ -1,0 +1,56 @@
+/// @file relocalizer.h
+/// @brief Where is this frame in a prior map? A query against a loaded map without insertion (issue 10 item 2).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sgtllc/config.h"
+#include "sgtllc/detector.h"
+#include "sgtllc/map/map.h"
+#include "sgtllc/node_extraction.h"
+
+namespace sgtllc::map {
+
+/// The answer for one query frame.
+struct Relocalization {
+  /// Retrieval and verification of the query against every map frame, as the online detector's search
+  /// (searchDatabase): candidates, best, is_loop (= localized), lateral and times. `frame` is −1 and `search`
+  /// kSearched: nothing is stored.
+  FrameResult search;
+  int map_frame = -1;  ///< map frame of the best verified candidate, or −1 if no candidate passed verification
+  bool localized = false;  ///< the best candidate is a loop (score_t > verification.sigma_4)
+  double score = 0.0;      ///< score_t of the best candidate (0 if none)
+  /// Maps query points into map frame @p map_frame (identity if none).
+  Eigen::Matrix4d T_mapframe_query = Eigen::Matrix4d::Identity();
+  /// The query's pose in the map's world frame, T_world_mapframe · T_mapframe_query, when the map has poses and a
+  /// candidate was chosen.
+  std::optional<Eigen::Matrix4d> T_world_query;
+};
+
+/// Queries frames against a map: every map frame is eligible (no recent-frame exclusion, no warm-up) and nothing
+/// is inserted, so the answers do not depend on the order of the queries. Not thread-safe (a kd-tree database
+/// grows its tree on the first query); uses config.threads internally, and the result does not depend on it.
+class Relocalizer {
+ public:
+  /// Takes @p map over; throws MapError(kIncompatible) unless it was built with a configuration compatible with
+  /// @p config (checkCompatible), and sgtllc::Error if @p config is invalid. @p source names the map in messages.
+  Relocalizer(Map map, const Config& config, const std::string& source = "map");
+
+  /// A labelled scan (sensor frame): its nodes are extracted with the configuration's clustering.
+  Relocalization localize(const LabeledCloud& cloud) const;
+  /// Ready-made nodes; throws sgtllc::Error as LoopDetector::process(nodes) does for bad nodes.
+  Relocalization localize(std::vector<Node> nodes) const;
+
+  const Map& map() const { return map_; }
+  const Config& config() const { return config_; }
+
+ private:
+  Map map_;
+  Config config_;
+  NodeExtractor extractor_;
+};
+
+}  // namespace sgtllc::map

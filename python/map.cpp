@@ -1,0 +1,115 @@
+// Map files and relocalization (include/sgtllc/map/): Map, load_map / Map.save, Relocalizer (issue 10). The
+// detector's to_map and resume live in detector.cpp with the detector.
+#include <memory>
+#include <mutex>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "sgtllc/map/map_file.h"
+#include "sgtllc/map/relocalizer.h"
+
+namespace sgtllc::python {
+
+map::Map copyMap(const map::Map& m) {
+  map::Map copy;
+  copy.config = m.config;
+  copy.names = m.names;
+  copy.poses = m.poses;
+  for (int f = 0; f < m.size(); ++f) {
+    const float* key = m.database.global(f);
+    copy.database.add(StoredFrame{m.database.nodes(f), std::vector<float>(key, key + m.database.globalDimension())});
+  }
+  return copy;
+}
+
+namespace {
+
+/// Relocalizer queries are not thread-safe (a kd-tree database grows on the first query): one lock per object.
+struct PyRelocalizer {
+  PyRelocalizer(const map::Map& m, const Config& config) : relocalizer(copyMap(m), config) {}
+  map::Relocalizer relocalizer;
+  std::mutex mutex;
+};
+
+}  // namespace
+
+void bindMap(py::module_& m) {
+  py::class_<map::Map, std::shared_ptr<map::Map>>(m, "Map",
+                                                   "A saved loop database: frames (nodes and keys), names, optional "
+                                                   "poses\nand the configuration fields they depend on "
+                                                   "(docs/map-format.md).")
+      .def_property_readonly("num_frames", &map::Map::size, "frames in the map")
+      .def_property_readonly("names", [](const map::Map& mp) { return mp.names; }, "frame names, in frame order")
+      .def_property_readonly("has_poses", &map::Map::hasPoses, "whether the frames have poses")
+      .def_property_readonly("poses",
+                             [](const map::Map& mp) -> py::object {
+                               if (!mp.hasPoses()) return py::none();
+                               return posesToArray(mp.poses);
+                             },
+                             "(N, 4, 4) float64 T_world_lidar of every frame, or None")
+      .def_property_readonly("config", [](const map::Map& mp) { return mp.config; },
+                             "[(key, value)] the configuration fields the map depends on, as `sgtllc config` prints")
+      .def("nodes", [](const map::Map& mp, int frame) {
+             if (frame < 0 || frame >= mp.size()) throw py::index_error("no frame " + std::to_string(frame));
+             return nodesToArrays(mp.database.nodes(frame));
+           },
+           py::arg("frame"), "(centres (N, 3) float64, classes (N,) int32) of a map frame.")
+      .def("save",
+           [](const map::Map& mp, const std::string& path, bool force) {
+             py::gil_scoped_release release;
+             map::writeMapFile(path, mp, io::overwriteIf(force));
+           },
+           py::arg("path"), py::arg("force") = false,
+           "Writes the map file atomically; an existing file raises sgtllc.Error unless force=True.");
+  m.def("load_map",
+        [](const std::string& path, const Config* config) {
+          requireFile(path);
+          py::gil_scoped_release release;
+          return std::make_shared<map::Map>(config ? map::readMapFile(path, *config) : map::readMapFile(path));
+        },
+        py::arg("path"), py::arg("config") = py::none(),
+        "Reads a map file (one sequential read). A truncated, corrupted, newer-version file, or (with config) one\n"
+        "built with other map fields, raises sgtllc.Error naming the file and the problem.");
+
+  py::class_<map::Relocalization>(m, "Relocalization", "Where a query frame is in a map.")
+      .def_readonly("search", &map::Relocalization::search, "the candidates and their verification (FrameResult)")
+      .def_readonly("map_frame", &map::Relocalization::map_frame, "best verified map frame, or -1")
+      .def_readonly("localized", &map::Relocalization::localized, "the best candidate's score_t > sigma_4")
+      .def_readonly("score", &map::Relocalization::score, "score_t of the best candidate (0 if none)")
+      .def_property_readonly("T_mapframe_query",
+                             [](const map::Relocalization& r) { return matrixToArray(r.T_mapframe_query); },
+                             "(4, 4): p_mapframe = T_mapframe_query @ p_query")
+      .def_property_readonly("T_world_query",
+                             [](const map::Relocalization& r) -> py::object {
+                               if (!r.T_world_query) return py::none();
+                               return matrixToArray(*r.T_world_query);
+                             },
+                             "(4, 4) pose of the query in the map's world frame, or None (no poses or candidate)");
+
+  py::class_<PyRelocalizer>(m, "Relocalizer",
+                            "Queries frames against a map: every map frame is eligible, nothing is inserted.")
+      .def(py::init<const map::Map&, const Config&>(), py::arg("map"), py::arg("config") = Config{},
+           "Raises sgtllc.Error if the map was built with other map fields than config's.")
+      .def("localize",
+           [](PyRelocalizer& r, const ArrayLike& points, const ArrayLike& labels, bool drop_nonfinite) {
+             LabeledCloud cloud = cloudFromArrays(points, labels, "", drop_nonfinite);
+             py::gil_scoped_release release;
+             std::lock_guard<std::mutex> lock(r.mutex);
+             return r.relocalizer.localize(cloud);
+           },
+           py::arg("points"), py::arg("labels"), py::arg("drop_nonfinite") = false,
+           "A labelled scan (arrays as LoopDetector.process) against the map. Returns a Relocalization.")
+      .def("localize_nodes",
+           [](PyRelocalizer& r, const ArrayLike& centres, const ArrayLike& classes) {
+             std::vector<Node> nodes =
+                 nodesFromArrays(centres, classes, "", r.relocalizer.config().numClasses());
+             py::gil_scoped_release release;
+             std::lock_guard<std::mutex> lock(r.mutex);
+             return r.relocalizer.localize(std::move(nodes));
+           },
+           py::arg("centres"), py::arg("classes"), "Ready-made nodes against the map. Returns a Relocalization.");
+}
+
+}  // namespace sgtllc::python

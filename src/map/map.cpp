@@ -1,0 +1,118 @@
+#include "sgtllc/map/map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <unordered_set>
+
+#include "sgtllc/io/config_yaml.h"
+#include "sgtllc/retrieval/retrieval_key.h"
+
+namespace sgtllc::map {
+namespace {
+
+/// Keys a map depends on (docs/map-format.md, "Configuration"): whole sections (the labeller too: geometric and
+/// network labels give other nodes), or single retrieval keys.
+bool storedField(std::string_view key) {
+  for (std::string_view section : {"labels.", "labeller.", "cluster.", "graph.", "descriptor."}) {
+    if (key.substr(0, section.size()) == section) return true;
+  }
+  return key == "retrieval.key" || key == "retrieval.histogram_bins" || key == "retrieval.histogram_range";
+}
+
+}  // namespace
+
+ConfigFields mapConfig(const Config& config) {
+  ConfigFields fields;
+  for (auto& field : io::configValues(config)) {
+    if (storedField(field.first)) fields.push_back(std::move(field));
+  }
+  return fields;
+}
+
+uint64_t fingerprint(const ConfigFields& fields) {
+  uint64_t h = 14695981039346656037ull;
+  const auto mix = [&h](std::string_view text) {
+    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xffu) * 1099511628211ull;  // a separator no UTF-8 text contains, so ("ab","c") ≠ ("a","bc")
+  };
+  for (const auto& [key, value] : fields) {
+    mix(key);
+    mix(value);
+  }
+  return h;
+}
+
+void checkCompatible(const Map& map, const Config& config, const std::string& source) {
+  const ConfigFields mine = mapConfig(config);
+  const auto incompatible = [&](const std::string& what) {
+    throw MapError(MapProblem::kIncompatible,
+                   source + ": the map was built with another configuration: " + what +
+                       " (these fields decide what a map stores; use the map's configuration, see `sgtllc map info`)");
+  };
+  for (size_t i = 0; i < std::max(mine.size(), map.config.size()); ++i) {
+    if (i >= map.config.size()) incompatible(mine[i].first + " is not in the map");
+    if (i >= mine.size()) incompatible(map.config[i].first + " is not in this configuration");
+    if (mine[i].first != map.config[i].first) {
+      incompatible("the map has " + map.config[i].first + " where the configuration has " + mine[i].first);
+    }
+    if (mine[i].second != map.config[i].second) {
+      incompatible(mine[i].first + ": the map was built with " + map.config[i].second + ", the configuration has " +
+                   mine[i].second);
+    }
+  }
+  // Equal fields imply what follows; a file that passed its checksums but breaks it was written wrongly.
+  const auto corrupted = [&](const std::string& what) {
+    throw MapError(MapProblem::kCorrupted, source + ": corrupted map: " + what);
+  };
+  const FrameDatabase& db = map.database;
+  if (db.size() > 0 && db.globalDimension() != retrieval::retrievalKeySize(config)) {
+    corrupted("keys of " + std::to_string(db.globalDimension()) + " entries, the configuration's have " +
+              std::to_string(retrieval::retrievalKeySize(config)));
+  }
+  for (int f = 0; f < db.size(); ++f) {
+    const std::vector<Node>& nodes = db.nodes(f);
+    if (static_cast<int>(nodes.size()) > config.graph.max_nodes) {
+      corrupted("frame " + map.names.at(f) + " has more than graph.max_nodes nodes");
+    }
+    for (const Node& n : nodes) {
+      if (n.label < 0 || n.label >= config.numClasses()) corrupted("frame " + map.names.at(f) + " has a bad label");
+    }
+  }
+}
+
+void checkFrames(const Map& map, const std::string& source) {
+  const auto invalid = [&](const std::string& what) { throw MapError(MapProblem::kInvalid, source + ": " + what); };
+  const size_t n = static_cast<size_t>(map.size());
+  if (map.names.size() != n) {
+    invalid(std::to_string(map.names.size()) + " frame names for " + std::to_string(n) + " frames");
+  }
+  if (!map.poses.empty() && map.poses.size() != n) {
+    invalid(std::to_string(map.poses.size()) + " poses for " + std::to_string(n) + " frames (all or none)");
+  }
+  std::unordered_set<std::string_view> seen;
+  for (const std::string& name : map.names) {
+    if (name.empty()) invalid("a frame has an empty name");
+    if (!seen.insert(name).second) invalid("frame name '" + name + "' is used twice (names must be unique)");
+  }
+  for (size_t f = 0; f < map.poses.size(); ++f) {
+    if (!map.poses[f].allFinite()) invalid("the pose of frame '" + map.names[f] + "' is not finite");
+  }
+}
+
+Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std::string> names,
+            std::vector<Eigen::Matrix4d> poses) {
+  Map map;
+  map.config = mapConfig(config);
+  map.names = std::move(names);
+  map.poses = std::move(poses);
+  map.database = FrameDatabase(config.retrieval.method);
+  for (int f = 0; f < database.size(); ++f) {
+    const float* key = database.global(f);
+    map.database.add(StoredFrame{database.nodes(f), std::vector<float>(key, key + database.globalDimension())});
+  }
+  checkFrames(map, "map");
+  return map;
+}
+
+}  // namespace sgtllc::map

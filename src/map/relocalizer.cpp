@@ -1,0 +1,59 @@
+#include "sgtllc/map/relocalizer.h"
+
+#include <chrono>
+#include <utility>
+
+#include "sgtllc/frame.h"
+#include "sgtllc/retrieval/retrieval_key.h"
+
+namespace sgtllc::map {
+namespace {
+
+const Config& validated(const Config& config) {
+  config.validate();
+  return config;
+}
+
+}  // namespace
+
+Relocalizer::Relocalizer(Map map, const Config& config, const std::string& source)
+    : map_(std::move(map)),
+      config_(validated(config)),
+      extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads) {
+  checkCompatible(map_, config_, source);
+  map_.database.setMethod(config_.retrieval.method);
+}
+
+Relocalization Relocalizer::localize(const LabeledCloud& cloud) const {
+  const auto start = std::chrono::steady_clock::now();
+  NodeExtractionResult extracted = extractor_.extract(cloud);
+  const double extraction_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  Relocalization r = localize(std::move(extracted.nodes));
+  r.search.extraction = extracted.stats;
+  r.search.timing.extraction_ms = extraction_ms;
+  return r;
+}
+
+Relocalization Relocalizer::localize(std::vector<Node> nodes) const {
+  Relocalization r;
+  const auto start = std::chrono::steady_clock::now();
+  // The query is described exactly as the detector describes a frame (LoopDetector::processNodes).
+  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
+                                              /*with_global=*/false, config_.numClasses());
+  const std::vector<float> key = retrieval::computeRetrievalKey(query.graph, config_);
+  r.search.num_nodes = query.numNodes();
+  r.search.timing.description_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  searchDatabase(query, key, map_.database, map_.size() - 1, config_, &r.search);
+  if (r.search.best < 0) return r;
+  const Candidate& best = r.search.candidates[static_cast<size_t>(r.search.best)];
+  r.map_frame = best.frame;
+  r.localized = r.search.is_loop;
+  r.score = best.match.score_t;
+  r.T_mapframe_query = best.match.T_match_query;
+  if (map_.hasPoses()) r.T_world_query = map_.poses[static_cast<size_t>(best.frame)] * r.T_mapframe_query;
+  return r;
+}
+
+}  // namespace sgtllc::map

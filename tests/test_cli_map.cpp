@@ -1,0 +1,163 @@
+// `sgtllc run --save-map`, `sgtllc localize` and `sgtllc map info` (issue 10): two sessions of one synthetic world
+// as node files, and every refusal the issue lists (another configuration, a directory, a truncated map, a query
+// session that is the map's own, an existing file without --force).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sgtllc/io/kitti_write.h"
+#include "sgtllc/io/nodes.h"
+#include "test_cli_support.h"
+#include "test_map_support.h"
+
+namespace sgtllc {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class CliMap : public test::CliTempDirTest {
+ protected:
+  CliMap() : CliTempDirTest("map") {}
+  void SetUp() override {
+    CliTempDirTest::SetUp();
+    writeSession(test::circleSequence(110), path("s1"));
+    second_ = test::circleSequence(20, 3.0, 0.9, /*seed=*/99);
+    writeSession(second_, path("s2"));
+    std::ofstream(path("config.yaml")) << "retrieval:\n  exclude_recent: 20\n";
+  }
+  /// DIR/nodes/NAME.txt node files, DIR/poses.txt (KITTI cam0 = LiDAR here: calib Tr is the identity) and calib.txt.
+  static void writeSession(const test::NodeSequence& s, const std::string& dir) {
+    fs::create_directories(dir + "/nodes");
+    for (size_t i = 0; i < s.frames.size(); ++i) io::writeNodesTxt(dir + "/nodes/" + s.names[i] + ".txt", s.frames[i]);
+    io::writeKittiPoses(dir + "/poses.txt", s.poses);
+    std::ofstream(dir + "/calib.txt") << "Tr: 1 0 0 0 0 1 0 0 0 0 1 0\n";
+  }
+  std::string saveMap(const std::string& map = "m.sgtmap") {
+    const auto r = test::run(s1() + " --save-map " + path(map));
+    EXPECT_EQ(r.status, 0) << r.out;
+    return r.out;
+  }
+  /// `run` of session 1 with its poses as odometry.
+  std::string s1() const {
+    return "run --nodes " + path("s1/nodes") + " --odometry " + path("s1/poses.txt") + " --calib " +
+           path("s1/calib.txt") + " --config " + path("config.yaml");
+  }
+  test::NodeSequence second_;
+};
+
+TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
+  const std::string run_out = saveMap();
+  EXPECT_NE(run_out.find("wrote map " + path("m.sgtmap") + " (110 frames; poses: the corrected trajectory of " + path("s1/poses.txt") + ")"),
+            std::string::npos)
+      << run_out;
+  const auto info = test::run("map info " + path("m.sgtmap"));
+  ASSERT_EQ(info.status, 0) << info.out;
+  EXPECT_NE(info.out.find("format version 1"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("frames 110 (with poses), first 000000, last 000109"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("retrieval.histogram_bins: 10"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("  KEYS v1  "), std::string::npos) << info.out;
+
+  const std::string args = "localize --map " + path("m.sgtmap") + " --nodes " + path("s2/nodes") + " --config " +
+                           path("config.yaml");
+  const auto one = test::run(args + " --out " + path("hits1.csv") + " --threads 1");
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_NE(one.out.find("frames 20, localized "), std::string::npos) << one.out;
+  const auto three = test::run(args + " --out " + path("hits3.csv") + " --threads 3");
+  ASSERT_EQ(three.status, 0) << three.out;
+  const std::string csv = slurp(path("hits1.csv"));
+  EXPECT_EQ(csv, slurp(path("hits3.csv")));
+
+  // Every localized row's map position is the second session's true position.
+  std::istringstream rows(csv);
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_EQ(line.rfind("query,map_frame,localized,score,score_c,lateral,T_mapframe_query_00,", 0), 0u) << line;
+  int localized = 0;
+  for (size_t q = 0; std::getline(rows, line); ++q) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 30u) << line;
+    EXPECT_EQ(cells[0], second_.names[q]);
+    if (cells[2] != "1") continue;
+    ++localized;
+    const Eigen::Vector3d t(std::stod(cells[21]), std::stod(cells[25]), std::stod(cells[29]));
+    EXPECT_LT((t - second_.poses[q].topRightCorner<3, 1>()).norm(), 0.3) << line;
+  }
+  EXPECT_GE(localized, 18);
+
+  const auto json = test::run(args + " --json", false);
+  ASSERT_EQ(json.status, 0);
+  EXPECT_NE(json.out.find("\"localized\": " + std::to_string(localized)), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"T_world_query\""), std::string::npos);
+}
+
+TEST_F(CliMap, SavingAMapChangesNoOtherOutput) {
+  const std::string base = s1();
+  ASSERT_EQ(test::run(base + " --out " + path("plain.csv")).status, 0);
+  ASSERT_EQ(test::run(base + " --out " + path("with.csv") + " --save-map " + path("m.sgtmap")).status, 0);
+  EXPECT_EQ(slurp(path("plain.csv")), slurp(path("with.csv")));
+  // The same run saves the same bytes.
+  ASSERT_EQ(test::run(base + " --save-map " + path("again.sgtmap")).status, 0);
+  EXPECT_EQ(slurp(path("m.sgtmap")), slurp(path("again.sgtmap")));
+}
+
+TEST_F(CliMap, RefusesBadMapsWithAMessageNamingTheFile) {
+  saveMap();
+  const std::string bytes = slurp(path("m.sgtmap"));
+  const std::string query = " --nodes " + path("s2/nodes") + " --config " + path("config.yaml");
+
+  // An existing map is kept without --force.
+  const auto again = test::run(s1() + " --save-map " + path("m.sgtmap"));
+  EXPECT_EQ(again.status, 1);
+  EXPECT_NE(again.out.find(path("m.sgtmap") + ": file exists"), std::string::npos) << again.out;
+  EXPECT_EQ(slurp(path("m.sgtmap")), bytes);
+
+  std::ofstream(path("bins.yaml")) << "retrieval:\n  exclude_recent: 20\n  histogram_bins: 12\n";
+  const auto other = test::run("localize --map " + path("m.sgtmap") + " --nodes " + path("s2/nodes") + " --config " +
+                               path("bins.yaml") + " --out " + path("hits.csv"));
+  EXPECT_EQ(other.status, 1);
+  EXPECT_NE(other.out.find(path("m.sgtmap") + ": the map was built with another configuration: "
+                           "retrieval.histogram_bins: the map was built with 10, the configuration has 12"),
+            std::string::npos)
+      << other.out;
+  EXPECT_FALSE(fs::exists(path("hits.csv")));
+
+  const auto dir = test::run("localize --map " + path("s1") + query);
+  EXPECT_EQ(dir.status, 1);
+  EXPECT_NE(dir.out.find("cannot read map " + path("s1") + ": is a directory"), std::string::npos) << dir.out;
+  const auto info_dir = test::run("map info " + path("s1"));
+  EXPECT_EQ(info_dir.status, 1);
+
+  std::ofstream(path("cut.sgtmap"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  for (const std::string& cmd : {"localize --map " + path("cut.sgtmap") + query, "map info " + path("cut.sgtmap")}) {
+    const auto cut = test::run(cmd);
+    EXPECT_EQ(cut.status, 1);
+    EXPECT_NE(cut.out.find(path("cut.sgtmap") + ": truncated map file"), std::string::npos) << cut.out;
+  }
+  const auto missing = test::run("map info " + path("none.sgtmap"));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.out.find(path("none.sgtmap")), std::string::npos) << missing.out;
+
+  // The map's own session fed back clashes; a session whose names merely repeat the map's (s2: 000000…) does not.
+  const auto self = test::run("localize --map " + path("m.sgtmap") + " --nodes " + path("s1/nodes") + " --config " +
+                              path("config.yaml") + " --out " + path("self.csv"));
+  EXPECT_EQ(self.status, 1);
+  EXPECT_NE(self.out.find("frame 000000 is frame 000000 of map " + path("m.sgtmap") +
+                          " (same name, same nodes): the query sequence is the map's own session"),
+            std::string::npos)
+      << self.out;
+  EXPECT_FALSE(fs::exists(path("self.csv")));
+}
+
+}  // namespace
+}  // namespace sgtllc
