@@ -13,6 +13,7 @@ namespace py = pybind11;
 
 void bindConfig(py::module_& m);         // config.cpp: Config and its sections, enums, YAML
 void bindBackendConfig(py::module_& m);  // config_backend.cpp: BackendConfig and its sections
+void bindLabel(py::module_& m);         // label.cpp: the geometric labeller, LabellerConfig (labeller.*)
 void bindRegistration(py::module_& m);  // registration.cpp: RegistrationConfig, Refinement
 void bindResults(py::module_& m);        // results.cpp: MatchResult, FrameResult, PairResult, stage times
 void bindDetector(py::module_& m);       // detector.cpp: LoopDetector, compare_pair, compare_nodes

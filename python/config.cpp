@@ -149,6 +149,7 @@ void bindConfig(py::module_& m) {
                      "ConfigError naming the key, e.g. 'verification.sigma_4 = 5 is out of range [0, 1]'.")
       .def(py::init<>(), "The defaults (what `sgtllc config` prints).")
       .def_readwrite("labels", &Config::labels, "label convention and class set (labels.*)")
+      .def_readwrite("labeller", &Config::labeller, "where the classes come from; the geometric labeller (labeller.*)")
       .def_readwrite("cluster", &Config::cluster, "clustering (cluster.*)")
       .def_readwrite("graph", &Config::graph, "semantic graph (graph.*)")
       .def_readwrite("descriptor", &Config::descriptor, "descriptors (descriptor.*)")

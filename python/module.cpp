@@ -44,6 +44,7 @@ PYBIND11_MODULE(sgtllc, m) {
   py::register_exception_translator(translate);
 
   m.attr("__version__") = SGTLLC_VERSION;
+  sgtllc::python::bindLabel(m);  // before the Config that holds its types
   sgtllc::python::bindRegistration(m);  // before the Config and the results that hold its types
   sgtllc::python::bindConfig(m);
   sgtllc::python::bindBackendConfig(m);

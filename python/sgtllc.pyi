@@ -34,6 +34,8 @@ class NodeScore(Enum):
     RATIO: int; COUNT: int
 class ScoreFormula(Enum):
     PAPER: int; LEGACY: int; OVERLAP: int
+class LabelSource(Enum):
+    FILE: int; GEOMETRIC: int
 class RefinementStatus(Enum):
     CONVERGED: int; MAX_ITERATIONS: int; TOO_FEW_POINTS: int; DEGENERATE: int; LOW_FITNESS: int; MOVED_TOO_FAR: int
 class RobustLoss(Enum):
@@ -103,6 +105,38 @@ class VerificationConfig:
     seed: int
     select_margin: float
     lateral_distance: float
+class GroundConfig:
+    sectors: int
+    bin: float
+    max_range: float
+    min_range: float
+    step: float
+    max_slope: float
+    max_climb: float
+    tolerance: float
+class SegmentRuleConfig:
+    voxel: float
+    min_points: int
+    min_voxel_points: int
+    pole_max_width: float
+    pole_min_height: float
+    pole_slice_low: float
+    pole_slice_high: float
+    pole_min_span: float
+    pole_voxel: float
+    pole_radius: float
+    building_min_top: float
+    building_min_length: float
+    fence_max_top: float
+    fence_min_length: float
+    fence_max_width: float
+    min_wall_share: float
+    min_fence_wall_share: float
+    min_scatter_share: float
+class LabellerConfig:
+    source: LabelSource
+    ground: GroundConfig
+    segments: SegmentRuleConfig
 class RegistrationConfig:
     pair: bool
     online: bool
@@ -155,6 +189,7 @@ class BackendConfig:
     def validate(self) -> None: ...
 class Config:
     labels: LabelConfig
+    labeller: LabellerConfig
     cluster: ClusterConfig
     graph: GraphConfig
     descriptor: DescriptorConfig
@@ -294,6 +329,7 @@ class Relocalizer:
     def localize_nodes(self, centres: ArrayLike, classes: ArrayLike) -> Relocalization: ...
 
 # --- readers (io.cpp) ---
+def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
 def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32
 def read_labels(path: str) -> np.ndarray: ...  # (N,) uint32
 def default_label_path(bin_path: str) -> str: ...

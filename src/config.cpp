@@ -149,6 +149,7 @@ void Config::validate() const {
   checkReal("verification.select_margin", v.select_margin, {0.0}, {1.0});
   checkReal("verification.lateral_distance", v.lateral_distance, {0.0, false}, {1000.0});
   validateRegistrationConfig(registration);
+  validateLabellerConfig(labeller, labels);
   checkInt("threads", threads, 1, kMaxThreads);
   validateBackendConfig(backend);
 }

@@ -27,9 +27,9 @@ const Config& validated(const Config& config) {
 
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
-      extractor_(config.cluster, config.labels, config.graph.max_nodes, config.threads),
+      extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads),
       database_(config.retrieval, config.threads),
-      clouds_(config.registration, config.labels) {
+      clouds_(config.registration, effectiveLabelConfig(config)) {
 }
 
 LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopDetector(config) {
@@ -134,7 +134,7 @@ void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, 
 
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config) {
   config.validate();
-  const NodeExtractor extractor(config.cluster, config.labels, config.graph.max_nodes, config.threads);
+  const NodeExtractor extractor(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads);
   const auto start = Clock::now();
   NodeExtractionResult q = extractor.extract(query);
   NodeExtractionResult m = extractor.extract(match);
@@ -145,7 +145,7 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   result.timing.extraction_ms = extraction_ms;
   if (config.registration.pair && result.match.rejection == Rejection::kNone) {
     const auto refine_start = Clock::now();
-    const LabelMap labels(config.labels);
+    const LabelMap labels(effectiveLabelConfig(config));
     refinePair(&result, queryPoints(query, labels, config.registration), matchPoints(match, labels, config.registration),
                config);
     result.timing.refinement_ms = msSince(refine_start);

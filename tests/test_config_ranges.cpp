@@ -90,6 +90,33 @@ std::vector<Range> ranges() {
   r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
+  const std::string lg = "labeller.ground.", ls = "labeller.segments.";
+  r.push_back({lg + "sectors", {"8", "1440"}, {"7", "1441"}, "[8, 1440]"});
+  r.push_back({lg + "bin", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
+  r.push_back({lg + "max_range", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
+  r.push_back({lg + "min_range", {"0", "19.99"}, {"-0.1", "20"}, "[0, 20)"});
+  for (const char* k : {"step", "max_slope", "max_climb"}) {
+    r.push_back({lg + k, {"0", "10"}, {"-0.1", "10.5"}, "[0, 10]"});
+  }
+  r.push_back({lg + "tolerance", {"1e-09", "10"}, {"0", "10.5"}, "(0, 10]"});
+  r.push_back({ls + "voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
+  r.push_back({ls + "min_points", {"1", "1000000"}, {"0", "1000001"}, "[1, 1000000]"});
+  r.push_back({ls + "min_voxel_points", {"3", "1000"}, {"2", "1001"}, "[3, 1000]"});
+  for (const char* k : {"pole_max_width", "pole_min_height", "pole_min_span", "building_min_top", "fence_max_top",
+                        "fence_max_width"}) {
+    r.push_back({ls + k, {"1e-09", "100"}, {"0", "101"}, "(0, 100]"});
+  }
+  // The slice must stay above its bottom (default 0.5 .. 1.8): the boundaries that keep it so.
+  r.push_back({ls + "pole_slice_low", {"0", "1.79"}, {"-0.1", "100.5"}, "[0, 100]"});
+  r.push_back({ls + "pole_slice_high", {"0.51", "100"}, {"0", "101"}, "(0, 100]"});
+  r.push_back({ls + "pole_voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
+  r.push_back({ls + "pole_radius", {"1e-09", "10"}, {"0", "10.5"}, "(0, 10]"});
+  for (const char* k : {"building_min_length", "fence_min_length"}) {
+    r.push_back({ls + k, {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
+  }
+  for (const char* k : {"min_wall_share", "min_fence_wall_share", "min_scatter_share"}) {
+    r.push_back({ls + k, {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
+  }
   r.push_back({"registration.voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
   r.push_back({"registration.max_points", {"100", "1000000"}, {"99", "1000001"}, "[100, 1000000]"});
   r.push_back({"registration.match_voxel", {"0.05", "10"}, {"0", "10.5"}, "[0.05, 10]"});
@@ -179,7 +206,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  EXPECT_EQ(numeric, 8 * 3 + 30 + 18 + 14);  // 8 classes incl. vehicle, 30 other keys, 18 backend.*, 14 registration.*
+  // 8 classes incl. vehicle, 30 other keys, 18 backend.*, 14 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 30 + 18 + 14 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

@@ -22,6 +22,7 @@ namespace {
 
 struct EvalCliOptions {
   std::string sequence, pairs, nodes, report, config;
+  std::string labeller, labels_dir;  ///< --labeller, --labels-dir (as `sgtllc run`)
   std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
   std::string map;              ///< --map: the relocalization protocol in this map instead
   ClosingOutputs outputs;
@@ -170,14 +171,14 @@ struct FolderPairs {
 };
 
 void runEval(const EvalCliOptions& o) {
-  const Config config = loadConfigOption(o.config, o.threads);
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   checkReportFolder(o);
   EvalClosing back;
   if (!o.odometry.empty()) {
     if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
     checkClosingOutputs(o.outputs, o.force);
   }
-  eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   eval::EvalOptions options;
   options.threads = config.threads;
   Progress progress("frames", source.size());
@@ -201,6 +202,13 @@ void runEval(const EvalCliOptions& o) {
   }
   applyAccumulation(source, o.accumulate, back.odometry.get(), o.sequence, o.calib);
 
+  UnknownLabels unknown;  // one warning per run, not one per frame
+  options.on_frame = [&unknown, &source, chained = options.on_frame](size_t i, const FrameResult& r,
+                                                                     const LoopDetector& detector) {
+    unknown.add(source.name(i), r.extraction.unknown_label_points);
+    if (chained) chained(i, r, detector);
+  };
+
   if (!o.pairs.empty()) {
     const auto pairs = eval::readPairList(o.pairs);
     const eval::GroundTruth truth = loadTruth(o.sequence, false);
@@ -219,6 +227,7 @@ void runEval(const EvalCliOptions& o) {
     FolderPairs folder_pairs(o, options);
     const eval::SequenceRun run = eval::runSequenceEvaluation(source, truth, config, options);
     progress.finish();
+    unknown.warn();
     const eval::SequenceMetrics m = eval::computeSequenceMetrics(run, options);
     folder_pairs.finish(run, truth, config, options, extra);
     if (back.odometry) {
@@ -280,6 +289,9 @@ void addEvalCommand(CLI::App& app) {
   cmd->add_option("--nodes", o->nodes, "read frames from node files NAME.txt (x y z label rows) in this folder");
   cmd->add_option("--report", o->report, "write report.md, metrics.json, CSV tables and PNG plots to this folder");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
+  addLabellerOption(cmd, &o->labeller);
+  cmd->add_option("--labels-dir", o->labels_dir,
+                  "read DIR/NNNNNN.label (e.g. a segmentation network's predictions) instead of SEQ_DIR/labels");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the metrics as one JSON object");

@@ -17,6 +17,7 @@ struct PairOptions {
   std::string query, match;
   std::string labels_query, labels_match, label_field = "label";
   std::string config;
+  std::string labeller;  ///< --labeller file|geometric
   std::string export_dir;
   bool json = false;
   bool force = false;
@@ -165,7 +166,7 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
 }
 
 void runPair(const PairOptions& o) {
-  const Config config = loadConfigOption(o.config, 0);
+  const Config config = loadConfigOption(o.config, 0, o.labeller);
   const ExportPaths paths = o.export_dir.empty() ? ExportPaths{} : checkExport(o.export_dir, o.force);
   FrameNodes q = loadFrameNodes(o.query, o.labels_query, o.label_field, config);
   FrameNodes mt = loadFrameNodes(o.match, o.labels_match, o.label_field, config);
@@ -177,7 +178,7 @@ void runPair(const PairOptions& o) {
   r.extraction_match = mt.stats;
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
   const auto refine_start = std::chrono::steady_clock::now();
-  const LabelMap labels(config.labels);
+  const LabelMap labels(effectiveLabelConfig(config));
   if (!q.from_node_file && !mt.from_node_file) {  // node files carry no points: the SVD pose stands
     refinePair(&r, queryPoints(q.cloud, labels, config.registration),
                matchPoints(mt.cloud, labels, config.registration), config);
@@ -208,6 +209,7 @@ void addPairCommand(CLI::App& app) {
   cmd->add_option("--labels-match", o->labels_match, "labels of MATCH (same default)");
   cmd->add_option("--label-field", o->label_field, "PCD field holding the per-point label")->capture_default_str();
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
+  addLabellerOption(cmd, &o->labeller);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->add_option("--export", o->export_dir,
                   "write the graphs (query.ply, match.ply, matches.ply) and the nodes (*_nodes.txt) to this folder");

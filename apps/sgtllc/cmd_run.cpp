@@ -22,6 +22,8 @@ struct RunOptions {
   std::string nodes;
   std::string out;
   std::string config;
+  std::string labeller;    ///< --labeller file|geometric
+  std::string labels_dir;  ///< --labels-dir: NAME.label files instead of SEQ_DIR/labels
   std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
   std::string save_map;         ///< --save-map: the database, names and poses as a map file
   ClosingOutputs outputs;
@@ -76,12 +78,12 @@ std::vector<Eigen::Matrix4d> sequencePoses(const RunOptions& o, const eval::Fram
 }
 
 void runSequence(const RunOptions& o) {
-  const Config config = loadConfigOption(o.config, o.threads);
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   // Checked now, so a bad path fails before the run; the final rename checks again (io/output_file.h).
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
   if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
-  eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
     odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
@@ -102,14 +104,17 @@ void runSequence(const RunOptions& o) {
   std::vector<ClosingLoop> edges;
   std::vector<double> frame_ms, load_ms;
   Progress progress("frames", source.size());
+  UnknownLabels unknown;
   eval::streamSequence(source, detector, config.threads,
                        [&](size_t index, const eval::LoadedFrame& loaded, const FrameResult& r) {
     frame_ms.push_back(r.timing.total_ms());
     load_ms.push_back(loaded.load_ms);
     accumulation.add(loaded);
-    const ExtractionStats& stats = loaded.stats;
-    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.unknown_label_points > 0 ||
-        stats.capped_nodes > 0) {
+    // Unknown label ids (a network's label space, a wrong labels.preset) are summed into one warning at the end.
+    ExtractionStats stats = loaded.stats;
+    unknown.add(source.name(index), stats.unknown_label_points);
+    stats.unknown_label_points = 0;
+    if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.capped_nodes > 0) {
       progress.clear();
       warnAboutInput(source.name(index), stats, r.num_nodes);
     }
@@ -135,6 +140,7 @@ void runSequence(const RunOptions& o) {
     progress.update(index + 1, std::to_string(loops.size()) + " loops");
   });
   progress.finish();
+  unknown.warn();
   std::unique_ptr<Closing> closing;
   if (odometry) {
     closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
@@ -211,6 +217,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
+  addLabellerOption(cmd, &o->labeller);
+  cmd->add_option("--labels-dir", o->labels_dir,
+                  "read DIR/NNNNNN.label (e.g. a segmentation network's predictions) instead of SEQ_DIR/labels");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and the loops as one JSON object");

@@ -6,6 +6,7 @@
 namespace sgtllc::cli {
 
 void addPairCommand(CLI::App& app);
+void addLabelCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addConfigCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);

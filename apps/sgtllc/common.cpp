@@ -11,6 +11,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
+#include "sgtllc/label/geometric_labeller.h"
 
 namespace fs = std::filesystem;
 
@@ -21,8 +22,15 @@ std::string& commandLine() {
   return line;
 }
 
-Config loadConfigOption(const std::string& path, int threads) {
+Config loadConfigOption(const std::string& path, int threads, const std::string& labeller) {
   Config config = path.empty() ? Config{} : io::loadConfig(path);
+  if (labeller == "geometric") {
+    config.labeller.source = LabelSource::kGeometric;
+  } else if (labeller == "file") {
+    config.labeller.source = LabelSource::kFile;
+  } else if (!labeller.empty()) {
+    throw Error("--labeller " + labeller + ": expected file or geometric");
+  }
   if (threads > 0) {
     config.threads = threads;
     config.backend.solver.num_threads = threads;
@@ -31,8 +39,14 @@ Config loadConfigOption(const std::string& path, int threads) {
   return config;
 }
 
-eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config) {
-  return nodes.empty() ? eval::FrameSource::semanticKitti(sequence, config) : eval::FrameSource::nodeFiles(nodes, config);
+eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
+                              const std::string& labels_dir) {
+  if (!labels_dir.empty() && !nodes.empty()) throw Error("--labels-dir and --nodes exclude each other");
+  if (!labels_dir.empty() && config.labeller.source == LabelSource::kGeometric) {
+    throw Error("--labels-dir and --labeller geometric exclude each other (the geometric labeller reads no labels)");
+  }
+  return nodes.empty() ? eval::FrameSource::semanticKitti(sequence, config, {labels_dir})
+                       : eval::FrameSource::nodeFiles(nodes, config);
 }
 
 namespace {
@@ -41,8 +55,15 @@ double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field) {
+LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field,
+                      const Config& config) {
   const std::string ext = fs::path(path).extension().string();
+  if (config.labeller.source == LabelSource::kGeometric) {
+    // The scan alone: no label file is opened (docs/labeller.md).
+    if (!label_path.empty()) throw Error(path + ": --labeller geometric reads no label file; drop the label option");
+    if (ext != ".bin") throw Error(path + ": --labeller geometric reads KITTI .bin scans (got '" + ext + "')");
+    return label::labelCloud(io::readKittiBin(path), label::GeometricLabeller(config.labeller));
+  }
   if (ext == ".pcd") {
     if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");
     return io::readPcd(path, label_field);
@@ -69,16 +90,23 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
     f.load_ms = msSince(start);
     return f;
   }
-  const LabeledCloud cloud = loadScan(path, label_path, label_field);
+  const LabeledCloud cloud = loadScan(path, label_path, label_field, config);
   f.points = cloud.points.size();
   f.load_ms = msSince(start);
   start = std::chrono::steady_clock::now();
-  NodeExtractionResult extracted = NodeExtractor(config.cluster, config.labels, config.graph.max_nodes).extract(cloud);
+  NodeExtractionResult extracted = NodeExtractor(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes).extract(cloud);
   f.extraction_ms = msSince(start);
   f.nodes = std::move(extracted.nodes);
   f.stats = extracted.stats;
   if (config.registration.pair) f.cloud = cloud;
   return f;
+}
+
+void addLabellerOption(CLI::App* cmd, std::string* labeller) {
+  cmd->add_option("--labeller", *labeller,
+                  "per-point classes: file (the label files) or geometric (from the scan alone, docs/labeller.md); "
+                  "default: the config's labeller.source")
+      ->check(CLI::IsMember({"file", "geometric"}));
 }
 
 void checkWritable(const std::string& path, bool force) { io::checkOutputFile(path, io::overwriteIf(force)); }
@@ -113,6 +141,19 @@ void warnAboutInput(const std::string& name, const ExtractionStats& stats, int n
   if (num_nodes == 0) {
     std::cerr << "warning: " << name << ": no graph nodes (no clusters of the stable classes); it cannot be a loop\n";
   }
+}
+
+void UnknownLabels::add(const std::string& frame, size_t points) {
+  ++seen_;
+  if (points == 0) return;
+  if (frames_++ == 0) first_ = frame;
+  points_ += points;
+}
+
+void UnknownLabels::warn() const {
+  if (points_ == 0) return;
+  std::cerr << "warning: ignored " << points_ << " points in " << frames_ << " of " << seen_ << " frames (first: "
+            << first_ << ") whose label id is not in the configured label set (labels.preset)\n";
 }
 
 Json matrixJson(const Eigen::Matrix4d& T) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "sgtllc/config.h"
@@ -27,11 +28,17 @@ inline constexpr int kExitUsage = 2;
 std::string& commandLine();
 
 /// Configuration from --config (or the defaults), with --threads applied if given (> 0) to the detector's
-/// `threads` and the back end's `backend.solver.num_threads`.
-Config loadConfigOption(const std::string& path, int threads);
+/// `threads` and the back end's `backend.solver.num_threads`, and --labeller (file | geometric; "" = the
+/// config's labeller.source).
+Config loadConfigOption(const std::string& path, int threads, const std::string& labeller = "");
 
-/// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels.
-eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config);
+/// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels
+/// (from @p labels_dir if given: --labels-dir; none with labeller.source geometric).
+eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
+                              const std::string& labels_dir = "");
+
+/// Adds `--labeller file|geometric` to @p cmd.
+void addLabellerOption(CLI::App* cmd, std::string* labeller);
 
 /// One input frame reduced to graph nodes.
 struct FrameNodes {
@@ -65,6 +72,19 @@ void writeOutput(const std::string& path, const std::string& text, bool force);
 /// carried the unknown ids ("points", or "node rows" for a node file).
 void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes,
                     const char* unit = "points");
+
+/// Points with label ids outside the configured label set, summed over a run: one warning at the end instead of
+/// one line per frame.
+class UnknownLabels {
+ public:
+  void add(const std::string& frame, size_t points);
+  /// "warning: ignored N points in F of T frames (first: NAME) whose label id ..." on stderr, if any.
+  void warn() const;
+
+ private:
+  size_t points_ = 0, frames_ = 0, seen_ = 0;
+  std::string first_;
+};
 
 Json matrixJson(const Eigen::Matrix4d& T);
 std::string matrixText(const Eigen::Matrix4d& T, const std::string& indent);

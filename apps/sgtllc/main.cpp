@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", sgtllc::cli::softwareText());
   sgtllc::cli::addPairCommand(app);
+  sgtllc::cli::addLabelCommand(app);
   sgtllc::cli::addRunCommand(app);
   sgtllc::cli::addOptimizeCommand(app);
   sgtllc::cli::addEvalCommand(app);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "sgtllc/backend/backend_config.h"
+#include "sgtllc/label/labeller_config.h"
 #include "sgtllc/registration/registration_config.h"
 #include "sgtllc/types.h"
 
@@ -264,6 +265,10 @@ inline constexpr int kMaxThreads = 256;
 /// Everything the pipeline reads. Modules receive only their own sub-struct.
 struct Config {
   LabelConfig labels;
+  /// Where the per-point classes come from: the label files (labels.*) or the geometric labeller
+  /// (docs/labeller.md). With source geometric no label file is read, labels.preset is not used (the labeller
+  /// speaks SemanticKITTI raw ids) and labels.extra_classes must be empty (it gives only the paper's classes).
+  LabellerConfig labeller;
   ClusterConfig cluster;
   GraphConfig graph;
   DescriptorConfig descriptor;
@@ -293,6 +298,13 @@ struct Config {
 /// Range checks of the back-end settings as ConfigError (`backend.loss_scale = 0 is out of range (0, 1000]`); a
 /// configuration that passes also passes backend::BackendConfig::validate().
 void validateBackendConfig(const backend::BackendConfig& backend);
+
+/// Range checks of the labeller settings as ConfigError (label/labeller_config.cpp), and the class set it needs.
+void validateLabellerConfig(const LabellerConfig& labeller, const LabelConfig& labels);
+
+/// The label space of the node extraction: @p config.labels, or with labeller.source geometric the
+/// SemanticKITTI raw ids the geometric labeller writes (LabelConfig{}).
+LabelConfig effectiveLabelConfig(const Config& config);
 
 /// Range checks of the registration settings as ConfigError (registration_config.cpp).
 void validateRegistrationConfig(const RegistrationConfig& registration);

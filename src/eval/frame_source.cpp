@@ -10,6 +10,7 @@
 #include "sgtllc/graph.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/sequence.h"
+#include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/parallel.h"
 
 namespace fs = std::filesystem;
@@ -23,18 +24,27 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config) {
-  auto seq = std::make_shared<io::SequenceDir>(dir);
-  auto extractor = std::make_shared<NodeExtractor>(config.cluster, config.labels, config.graph.max_nodes);
-  auto store = std::make_shared<CloudStore>(config.registration, config.labels);  // prepare() only
+FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config,
+                                       const FrameSourceOptions& options) {
+  const bool geometric = config.labeller.source == LabelSource::kGeometric;
+  auto seq = std::make_shared<io::SequenceDir>(dir, io::SequenceLabels{!geometric, options.labels_dir});
+  const LabelConfig labels = effectiveLabelConfig(config);
+  auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
+  auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only
+  std::shared_ptr<const label::GeometricLabeller> labeller;
+  if (geometric) labeller = std::make_shared<const label::GeometricLabeller>(config.labeller);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
   source.read_ = [seq](size_t i) { return seq->load(i); };
-  source.reduce_ = [extractor, store](const LabeledCloud& cloud) {
+  // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
+  source.reduce_ = [extractor, store, labeller](const LabeledCloud& input) {
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
+    LabeledCloud labelled;
+    if (labeller) labelled = label::labelCloud(input.points, *labeller);
+    const LabeledCloud& cloud = labeller ? labelled : input;
     NodeExtractionResult r = extractor->extract(cloud);
-    f.extraction_ms = msSince(start);
+    f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
     f.nodes = std::move(r.nodes);
     f.stats = r.stats;
     start = std::chrono::steady_clock::now();

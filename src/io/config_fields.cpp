@@ -225,6 +225,14 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                                    {"custom", LabelPreset::kCustom}}));
   f.push_back(customMap());
   f.push_back(extraClasses());
+  f.push_back(choice<LabelSource>("labeller.source",
+                                  "per-point classes from the label files or from the scan's geometry (docs/labeller.md)",
+                                  [](Config& c) -> LabelSource& { return c.labeller.source; },
+                                  {{"file", LabelSource::kFile}, {"geometric", LabelSource::kGeometric}}));
+  addLabellerFields(BackendFieldMakers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
+                                       [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
+                                       [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
+                                       [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); }});
   for (int k = 0; k < labels.numClasses(); ++k) {
     const std::string p = "cluster." + labels.className(k) + ".";
     f.push_back(number(p + "voxel", "voxel leaf (m); 0 = no downsampling",

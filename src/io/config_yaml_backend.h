@@ -27,4 +27,8 @@ void addBackendFields(const BackendFieldMakers& add);
 /// Adds every field of RegistrationConfig (`registration.*`, config_yaml_registration.cpp) with the same makers.
 void addRegistrationFields(const BackendFieldMakers& add);
 
+/// Adds the numeric fields of LabellerConfig (`labeller.ground.*`, `labeller.segments.*`,
+/// config_yaml_labeller.cpp); `labeller.source` is config_fields.cpp's.
+void addLabellerFields(const BackendFieldMakers& add);
+
 }  // namespace sgtllc::io::detail

@@ -32,18 +32,23 @@ std::vector<fs::path> listScans(const fs::path& velodyne) {
 
 }  // namespace
 
-SequenceDir::SequenceDir(const std::string& dir) : dir_(dir) {
+SequenceDir::SequenceDir(const std::string& dir, const SequenceLabels& labels) : dir_(dir) {
   const fs::path root(dir);
   const std::vector<fs::path> scans = listScans(root / "velodyne");
+  const fs::path label_dir = labels.dir.empty() ? root / "labels" : fs::path(labels.dir);
+  std::error_code ec;
+  if (labels.read && !labels.dir.empty() && !fs::is_directory(label_dir, ec)) {
+    throw Error(labels.dir + ": no such label folder (expected NNNNNN.label files)");
+  }
   std::string first_missing;
   size_t missing = 0;
-  std::error_code ec;
   for (const fs::path& scan : scans) {
-    const fs::path label = root / "labels" / fs::path(scan.stem()).concat(".label");
+    bins_.push_back(scan.string());
+    if (!labels.read) continue;
+    const fs::path label = label_dir / fs::path(scan.stem()).concat(".label");
     if (!fs::is_regular_file(label, ec)) {
       if (missing++ == 0) first_missing = label.string();
     }
-    bins_.push_back(scan.string());
     labels_.push_back(label.string());
   }
   if (missing > 0) {
@@ -54,6 +59,13 @@ SequenceDir::SequenceDir(const std::string& dir) : dir_(dir) {
 
 std::string SequenceDir::frameName(size_t i) const { return fs::path(binPath(i)).stem().string(); }
 
-LabeledCloud SequenceDir::load(size_t i) const { return readLabeledScan(binPath(i), labelPath(i)); }
+LabeledCloud SequenceDir::load(size_t i) const {
+  if (labels_.empty()) {
+    LabeledCloud cloud;
+    cloud.points = readKittiBin(binPath(i));
+    return cloud;
+  }
+  return readLabeledScan(binPath(i), labelPath(i));
+}
 
 }  // namespace sgtllc::io

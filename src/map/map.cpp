@@ -11,9 +11,10 @@
 namespace sgtllc::map {
 namespace {
 
-/// Keys a map depends on (docs/map-format.md, "Configuration"): whole sections, or single retrieval keys.
+/// Keys a map depends on (docs/map-format.md, "Configuration"): whole sections (the labeller too: geometric and
+/// network labels give other nodes), or single retrieval keys.
 bool storedField(std::string_view key) {
-  for (std::string_view section : {"labels.", "cluster.", "graph.", "descriptor."}) {
+  for (std::string_view section : {"labels.", "labeller.", "cluster.", "graph.", "descriptor."}) {
     if (key.substr(0, section.size()) == section) return true;
   }
   return key == "retrieval.key" || key == "retrieval.histogram_bins" || key == "retrieval.histogram_range";

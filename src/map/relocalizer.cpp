@@ -21,7 +21,7 @@ const Config& validated(const Config& config) {
 Relocalizer::Relocalizer(Map map, const Config& config, const std::string& source)
     : map_(std::move(map)),
       config_(validated(config)),
-      extractor_(config.cluster, config.labels, config.graph.max_nodes, config.threads) {
+      extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads) {
   checkCompatible(map_, config_, source);
   map_.database.setSearch(config_.retrieval, config_.threads);
 }
