@@ -322,7 +322,8 @@ void addEvalCommand(CLI::App& app) {
         throw CLI::ValidationError("eval", "--map runs the relocalization protocol alone: drop --pairs, --odometry, "
                                            "--report and --accumulate");
       }
-      evalRelocalization(o->map, o->sequence, o->nodes, loadConfigOption(o->config, o->threads), o->json);
+      evalRelocalization(o->map, o->sequence, o->nodes, o->labels_dir,
+                         loadConfigOption(o->config, o->threads, o->labeller), o->json);
       return;
     }
     o->command = commandLine();

@@ -16,6 +16,7 @@ namespace {
 
 struct LocalizeOptions {
   std::string map, sequence, nodes, out, config;
+  std::string labeller, labels_dir;  ///< --labeller, --labels-dir (as `sgtllc run`)
   int threads = 0;
   bool json = false;
   bool force = false;
@@ -83,9 +84,9 @@ std::string hitLine(const Hit& h) {
 }
 
 void localizeCommand(const LocalizeOptions& o) {
-  const Config config = loadConfigOption(o.config, o.threads);
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   if (!o.out.empty()) checkWritable(o.out, o.force);
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config);
+  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   const std::string& query_name = o.nodes.empty() ? o.sequence : o.nodes;
   const map::Relocalizer relocalizer(map::readMapFile(o.map, config), config, o.map);
   const map::Map& m = relocalizer.map();
@@ -147,6 +148,9 @@ void addLocalizeCommand(CLI::App& app) {
                   "write one CSV row per frame: query,map_frame,localized,score,score_c,lateral, T_mapframe_query "
                   "(3x4), T_world_query (3x4, with map poses)");
   cmd->add_option("--config", o->config, "YAML configuration (its map fields must equal the map's: `sgtllc map info`)");
+  addLabellerOption(cmd, &o->labeller);
+  cmd->add_option("--labels-dir", o->labels_dir,
+                  "read DIR/NNNNNN.label (e.g. a segmentation network's predictions) instead of SEQ_DIR/labels");
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and every frame's answer as one JSON object");

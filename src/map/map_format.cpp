@@ -10,12 +10,17 @@
 #include <optional>
 #include <set>
 
+#include "map/map_bytes.h"
+#include "map/ivf_section.h"
+
 namespace sgtllc::map {
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
               "the map format is little-endian and this code copies host words: port it before using a big-endian host");
 
 namespace {
+
+using namespace detail;  // put, putText, Reader (map_bytes.h), encodeIvf, readIvfState (ivf_section.h)
 
 constexpr std::string_view kMagic("SGTLLMAP", 8);
 constexpr size_t kHeaderBytes = 40;       // magic, version, sections, file bytes, fingerprint, flags, checksum
@@ -28,18 +33,6 @@ uint32_t crc(std::string_view bytes) {
       crc32_z(crc32_z(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()));
 }
 
-template <typename T>
-void put(std::string& out, T value) {
-  char raw[sizeof(T)];
-  std::memcpy(raw, &value, sizeof(T));
-  out.append(raw, sizeof(T));
-}
-
-void putText(std::string& out, const std::string& text) {
-  put<uint32_t>(out, static_cast<uint32_t>(text.size()));
-  out += text;
-}
-
 void putSection(std::string& out, std::string_view tag, const std::string& payload) {
   const size_t start = out.size();
   out.append(tag.data(), 4);
@@ -48,48 +41,6 @@ void putSection(std::string& out, std::string_view tag, const std::string& paylo
   out += payload;
   put<uint32_t>(out, crc(std::string_view(out).substr(start)));
 }
-
-/// Reads values from bytes whose checksum passed; an overrun or a bad value is still reported, never trusted.
-class Reader {
- public:
-  Reader(std::string_view bytes, std::string what) : bytes_(bytes), what_(std::move(what)) {}
-
-  template <typename T>
-  T get() {
-    need(sizeof(T));
-    T value;
-    std::memcpy(&value, bytes_.data() + pos_, sizeof(T));
-    pos_ += sizeof(T);
-    return value;
-  }
-  std::string text() {
-    const uint32_t size = get<uint32_t>();
-    need(size);
-    std::string s(bytes_.substr(pos_, size));
-    pos_ += size;
-    return s;
-  }
-  /// A count of items of at least @p item_bytes each: at most what the remaining bytes can hold (so no huge
-  /// allocation follows a bad count).
-  uint64_t count(size_t item_bytes) {
-    const uint64_t n = get<uint64_t>();
-    if (n > remaining() / item_bytes) fail("a count of " + std::to_string(n) + " does not fit in the section");
-    return n;
-  }
-  size_t remaining() const { return bytes_.size() - pos_; }
-  void end() const {
-    if (remaining() != 0) fail(std::to_string(remaining()) + " bytes left over");
-  }
-  [[noreturn]] void fail(const std::string& why) const { throw MapError(MapProblem::kCorrupted, what_ + why); }
-
- private:
-  void need(size_t n) const {
-    if (n > remaining()) fail("ends early");
-  }
-  std::string_view bytes_;
-  size_t pos_ = 0;
-  std::string what_;
-};
 
 /// Sections as decoded, before they make a map.
 struct Parts {
@@ -163,28 +114,7 @@ void readKeys(Reader& r, Parts& parts) {
   parts.keys.emplace(dim, std::move(keys));
 }
 
-void readIvf(Reader& r, Parts& parts) {
-  IvfState s;
-  s.lists = static_cast<int>(r.get<uint32_t>());
-  s.trained_frames = static_cast<int>(r.get<uint32_t>());
-  const uint32_t dim = r.get<uint32_t>();
-  if (s.lists < 1 || s.lists > 65536 || dim == 0 || dim > (1u << 20)) {
-    r.fail("an inverted file of " + std::to_string(s.lists) + " lists of keys of " + std::to_string(dim));
-  }
-  const uint64_t centroid_floats = static_cast<uint64_t>(s.lists) * dim;
-  if (centroid_floats > r.remaining() / sizeof(float)) r.fail("the centroids do not fit in the section");
-  s.centroids.resize(static_cast<size_t>(centroid_floats));
-  for (float& v : s.centroids) {
-    v = r.get<float>();
-    if (!std::isfinite(v)) r.fail("a centroid entry is not finite");
-  }
-  s.list_of_frame.resize(r.count(sizeof(int32_t)));
-  for (int32_t& l : s.list_of_frame) {
-    l = r.get<int32_t>();
-    if (l < 0 || l >= s.lists) r.fail("a frame's list is out of range");
-  }
-  parts.ivf = std::move(s);
-}
+void readIvf(Reader& r, Parts& parts) { parts.ivf = readIvfState(r); }
 
 struct SectionKind {
   std::string_view tag;
@@ -228,17 +158,8 @@ std::string encodeMap(const Map& map, const std::string& source) {
   put<uint32_t>(keys, dim);
   put<uint64_t>(keys, n);
   for (int f = 0; f < db.size(); ++f) keys.append(reinterpret_cast<const char*>(db.global(f)), sizeof(float) * dim);
-  std::string ivf;
   const std::optional<IvfState> state = db.ivfState();
-  if (state) {
-    put<uint32_t>(ivf, static_cast<uint32_t>(state->lists));
-    put<uint32_t>(ivf, static_cast<uint32_t>(state->trained_frames));
-    put<uint32_t>(ivf, dim);
-    ivf.append(reinterpret_cast<const char*>(state->centroids.data()), sizeof(float) * state->centroids.size());
-    put<uint64_t>(ivf, state->list_of_frame.size());
-    for (int32_t l : state->list_of_frame) put<int32_t>(ivf, l);
-  }
-
+  const std::string ivf = state ? encodeIvf(*state, dim) : std::string();
   std::string body;
   body.reserve(conf.size() + names.size() + poses.size() + nodes.size() + keys.size() + 5 * 20);
   putSection(body, "CONF", conf);
