@@ -21,11 +21,13 @@ bool closer(const std::pair<int, float>& a, const std::pair<int, float>& b) {
   return a.second < b.second || (a.second == b.second && a.first < b.first);
 }
 
+#ifdef SGTLLC_HAVE_FAISS
 /// Lists for @p rows frames when RetrievalConfig::ivf_lists is 0: 2·√N keeps a list near √N/2 frames, so a query
 /// scanning ivf_probe lists reads a few thousand keys at a million frames (BENCHMARKS.md "Retrieval at scale").
 int automaticLists(int rows) {
   return std::clamp(static_cast<int>(std::lround(2.0 * std::sqrt(static_cast<double>(rows)))), 16, 16384);
 }
+#endif
 
 }  // namespace
 
