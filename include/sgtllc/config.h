@@ -179,9 +179,9 @@ struct RetrievalConfig {
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
   /// Lists of the inverted file (method ivf); 0: 2·√N at training, within [16, 16384] [0, 65536].
   int ivf_lists = 0;
-  /// Lists a query scans (method ivf). 12 of the 2,000 lists of a million-frame map found 0.994 of the exact
-  /// top-15 in 3.1 ms of CPU (16: 0.996 in 4.5 ms; BENCHMARKS.md "Retrieval at scale") [1, 65536].
-  int ivf_probe = 12;
+  /// Lists a query scans (method ivf). 20 of the 2,000 lists of a million-frame map found 0.991 of the exact
+  /// top-15 in 3.6 ms of CPU on the harder of the two query sets of BENCHMARKS.md "Retrieval at scale" [1, 65536].
+  int ivf_probe = 20;
   /// Frames stored before the inverted file is trained (method ivf); fewer are searched exactly. With
   /// ivf_lists 0 it is trained again each time the database has grown fourfold [64, 1000000].
   int ivf_train_frames = 20000;
