@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/io/nodes.h"
 #include "test_cli_support.h"
@@ -99,6 +101,46 @@ TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
   ASSERT_EQ(json.status, 0);
   EXPECT_NE(json.out.find("\"localized\": " + std::to_string(localized)), std::string::npos) << json.out;
   EXPECT_NE(json.out.find("\"T_world_query\""), std::string::npos);
+}
+
+TEST_F(CliMap, EvalWithAMapScoresTheRelocalizationProtocol) {
+  saveMap();
+  // A session 1 m beside session 1's circle (second_ runs 3 m beside it: no frame of it is a positive).
+  const test::NodeSequence third = test::circleSequence(20, 1.0, 0.9, /*seed=*/77);
+  writeSession(third, path("s3"));
+  const auto localize = test::run("localize --map " + path("m.sgtmap") + " --nodes " + path("s3/nodes") +
+                                  " --config " + path("config.yaml") + " --json", false);
+  ASSERT_EQ(localize.status, 0) << localize.out;
+  const auto eval = test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --map " + path("m.sgtmap") +
+                              " --config " + path("config.yaml") + " --json", false);
+  ASSERT_EQ(eval.status, 0) << eval.out;
+  const nlohmann::json j = nlohmann::json::parse(eval.out);
+  const nlohmann::json hits = nlohmann::json::parse(localize.out);
+  // Positives and negatives by brute force over both sessions' poses (map poses: session 1's corrected
+  // trajectory, its own poses as odometry).
+  const test::NodeSequence first = test::circleSequence(110);
+  int positives = 0, negatives = 0;
+  for (const Eigen::Matrix4d& q : third.poses) {
+    double nearest = 1e9;
+    for (const Eigen::Matrix4d& m : first.poses) {
+      nearest = std::min(nearest, (m.topRightCorner<3, 1>() - q.topRightCorner<3, 1>()).norm());
+    }
+    positives += nearest <= 3.0;
+    negatives += nearest > 20.0;
+  }
+  EXPECT_EQ(j["reloc_queries"], 20);
+  EXPECT_EQ(j["reloc_positives"], positives);
+  EXPECT_EQ(j["reloc_negatives"], negatives);
+  EXPECT_EQ(j["reloc_accepted"], hits["localized"]);  // the same answers as `localize`
+  ASSERT_GT(positives, 0);
+  EXPECT_DOUBLE_EQ(j["reloc_recall_at_1"].get<double>(), j["reloc_accepted_near"].get<double>() / positives);
+  EXPECT_GE(j["reloc_pose_success"].get<double>(), 0.9);
+  for (const char* key : {"reloc_precision", "reloc_false_rate"}) EXPECT_TRUE(j.contains(key)) << key;
+
+  const auto report = test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --map " +
+                                path("m.sgtmap") + " --report " + path("r"));
+  EXPECT_EQ(report.status, 2) << report.out;  // --map runs the relocalization protocol alone
+  EXPECT_FALSE(fs::exists(path("r")));
 }
 
 TEST_F(CliMap, SavingAMapChangesNoOtherOutput) {
