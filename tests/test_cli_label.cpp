@@ -93,6 +93,17 @@ TEST_F(CliLabel, RunWithTheGeometricLabellerReadsScansOnly) {
   EXPECT_EQ(r.status, 0) << r.out;
 }
 
+TEST_F(CliLabel, TheGeometricLabellerLabelsAccumulatedScans) {
+  // Raw Mid-70 scans without labels/: each frame merges 5 scans, then the merged cloud is labelled.
+  const std::string seq = path("mid70");
+  CliRun r = run("simulate --out " + seq + " --frames 12 --seed 3 --sensor mid70 --accumulate 1 --no-preview");
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::filesystem::remove_all(seq + "/labels");
+  r = run("run " + seq + " --accumulate 5 --labeller geometric");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("accumulated 5 scans per frame"), std::string::npos) << r.out;
+}
+
 TEST_F(CliLabel, LabelsDirNamesTheMissingFrameAndRejectsWrongLengths) {
   namespace fs = std::filesystem;
   const std::string seq = scanOnlySequence();

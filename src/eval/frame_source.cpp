@@ -35,7 +35,13 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
   if (geometric) labeller = std::make_shared<const label::GeometricLabeller>(config.labeller);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
-  source.read_ = [seq](size_t i) { return seq->load(i); };
+  source.read_ = [seq, geometric](size_t i) {
+    LabeledCloud cloud = seq->load(i);
+    // No label file is read: placeholders keep points and labels paired (scan accumulation) until the labeller
+    // replaces them in reduce_.
+    if (geometric) cloud.labels.assign(cloud.points.size(), 0);
+    return cloud;
+  };
   // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
   source.reduce_ = [extractor, store, labeller](const LabeledCloud& input) {
     LoadedFrame f;
