@@ -5,7 +5,7 @@
 #
 # A block is runnable when the line just before its ```sh fence is the comment <!-- check -->. Each marked block
 # runs on its own with `sh -e` in a fresh scratch folder that holds links to the repository's top-level entries
-# (data/, configs/, ...), with a `shared` link beside it to the repository's ../shared (the README's real data),
+# (data/, configs/, ...; a README command uses the bundled data only, never anything outside the repository),
 # and with `sgtllc` on PATH as the given binary: relative paths work as in a clone, outputs land in the scratch
 # folder. Lines starting with # are comments (expected output in the README), as in any shell.
 # --list prints the marked blocks (file line and text) instead of running them.
@@ -66,7 +66,6 @@ for block in "$scratch/blocks"/*; do
     case $name in build*) continue ;; esac
     ln -s "$entry" "$work/$name"
   done
-  [ -e "$repo/../shared" ] && ln -s "$(cd "$repo/.." && pwd)/shared" "$scratch/run/shared"
   if (cd "$work" && PATH="$scratch/bin:$PATH" sh -e "$block") > "$scratch/log" 2>&1; then
     echo "ok   $where"
   else
