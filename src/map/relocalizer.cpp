@@ -5,6 +5,7 @@
 
 #include <Eigen/LU>
 
+#include "kdtree_index.h"
 #include "sgtllc/frame.h"
 #include "sgtllc/retrieval/retrieval_key.h"
 
@@ -23,6 +24,7 @@ Relocalizer::Relocalizer(Map map, const Config& config, const std::string& sourc
       config_(validated(config)),
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads) {
   checkCompatible(map_, config_, source);
+  if (map_.hasPoses()) positions_ = std::make_shared<const PositionIndex>(map_.poses);
   map_.database.setSearch(config_.retrieval, config_.threads);
 }
 
@@ -35,6 +37,36 @@ Relocalization Relocalizer::localize(const LabeledCloud& cloud) const {
   r.search.extraction = extracted.stats;
   r.search.timing.extraction_ms = extraction_ms;
   return r;
+}
+
+struct Relocalizer::PositionIndex {
+  explicit PositionIndex(const std::vector<Eigen::Matrix4d>& poses) : xyz(positionsOf(poses)), tree(&xyz) {}
+  static std::vector<float> positionsOf(const std::vector<Eigen::Matrix4d>& poses) {
+    std::vector<float> out;
+    out.reserve(poses.size() * 3);
+    for (const Eigen::Matrix4d& T : poses) {
+      for (int k = 0; k < 3; ++k) out.push_back(static_cast<float>(T(k, 3)));
+    }
+    return out;
+  }
+  std::vector<float> xyz;  ///< before tree: the tree is built over it
+  internal::PointKdTree tree;
+};
+
+int Relocalizer::nearestMapFrame(const Eigen::Vector3d& at) const {
+  // The tree ranks in float; the few nearest are ranked again in double with ties to the lower frame, so the
+  // answer is the exact scan's.
+  const float query[3] = {static_cast<float>(at.x()), static_cast<float>(at.y()), static_cast<float>(at.z())};
+  std::vector<uint32_t> near;
+  positions_->tree.knn(query, 8, &near);
+  int nearest = -1;
+  double nearest_d2 = 0.0;
+  for (uint32_t f : near) {
+    const double d2 = (map_.poses[f].topRightCorner<3, 1>() - at).squaredNorm();
+    const int frame = static_cast<int>(f);
+    if (nearest < 0 || d2 < nearest_d2 || (d2 == nearest_d2 && frame < nearest)) nearest = frame, nearest_d2 = d2;
+  }
+  return nearest;
 }
 
 Relocalization Relocalizer::localize(std::vector<Node> nodes) const {
@@ -59,13 +91,7 @@ Relocalization Relocalizer::localize(std::vector<Node> nodes) const {
   // The verified frame may be a neighbour of the place along the old pass or across the street (the top-1 choice
   // is among near-equal scores); with poses, the answer is the map frame nearest to where the query is estimated
   // to be, ties to the lower frame.
-  const Eigen::Vector3d at = r.T_world_query->topRightCorner<3, 1>();
-  int nearest = best.frame;
-  double nearest_d2 = (map_.poses[static_cast<size_t>(nearest)].topRightCorner<3, 1>() - at).squaredNorm();
-  for (int f = 0; f < map_.size(); ++f) {
-    const double d2 = (map_.poses[static_cast<size_t>(f)].topRightCorner<3, 1>() - at).squaredNorm();
-    if (d2 < nearest_d2 || (d2 == nearest_d2 && f < nearest)) nearest = f, nearest_d2 = d2;
-  }
+  const int nearest = nearestMapFrame(r.T_world_query->topRightCorner<3, 1>());
   r.map_frame = nearest;
   r.T_mapframe_query = map_.poses[static_cast<size_t>(nearest)].inverse() * *r.T_world_query;
   return r;

@@ -2,6 +2,7 @@
 /// @brief Where is this frame in a prior map? A query against a loaded map without insertion (issue 10 item 2).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -52,9 +53,15 @@ class Relocalizer {
   const Config& config() const { return config_; }
 
  private:
+  /// The map frames' positions in a kd-tree (maps with poses): the nearest map frame to an estimated pose is
+  /// found without a pass over every pose.
+  struct PositionIndex;
+  int nearestMapFrame(const Eigen::Vector3d& at) const;
+
   Map map_;
   Config config_;
   NodeExtractor extractor_;
+  std::shared_ptr<const PositionIndex> positions_;  ///< null without map poses
 };
 
 }  // namespace sgtllc::map
