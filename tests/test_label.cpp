@@ -3,7 +3,9 @@
 // bad input).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <limits>
 #include <random>
 #include <thread>
@@ -161,6 +163,50 @@ TEST(Segmentation, TwoBoxesApartAreTwoSegments) {
   EXPECT_EQ(s.num_segments, 2);
   for (size_t i = 0; i < 1000; ++i) EXPECT_EQ(s.voxel_segment[s.point_voxel[i]], i < 500 ? 0 : 1);
   EXPECT_EQ(s.point_voxel.back(), -1);
+}
+
+// A real scan's segments against a brute-force reference: voxels in a std::map, each joined to every occupied
+// voxel of its 26-neighbourhood. Two points share a segment iff they share a reference component.
+TEST(Segmentation, RealScanMatchesBruteForceComponents) {
+  const std::vector<Eigen::Vector3f> pts = io::readKittiBin(test::dataPath("kitti/00/velodyne/004501.bin"));
+  const std::vector<uint8_t> use(pts.size(), 1);
+  const double leaf = 0.4;
+  const label::Segmentation s = label::segmentVoxels(pts, use, leaf);
+  std::map<std::array<int, 3>, int> voxel_of;
+  std::vector<int> point_voxel(pts.size());
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const std::array<int, 3> c = {static_cast<int>(std::floor(pts[i].x() / leaf)),
+                                  static_cast<int>(std::floor(pts[i].y() / leaf)),
+                                  static_cast<int>(std::floor(pts[i].z() / leaf))};
+    point_voxel[i] = voxel_of.emplace(c, static_cast<int>(voxel_of.size())).first->second;
+  }
+  std::vector<int> parent(voxel_of.size());
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v];
+    return v;
+  };
+  for (const auto& [c, v] : voxel_of) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto it = voxel_of.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it != voxel_of.end()) parent[root(it->second)] = root(v);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(s.num_voxels, static_cast<int>(voxel_of.size()));
+  // The partitions agree: a one-to-one map between reference roots and segment ids.
+  std::map<int, int> segment_of_root, root_of_segment;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    ASSERT_GE(s.point_voxel[i], 0);
+    const int seg = s.voxel_segment[s.point_voxel[i]], r = root(point_voxel[i]);
+    ASSERT_EQ(segment_of_root.emplace(r, seg).first->second, seg) << "point " << i;
+    ASSERT_EQ(root_of_segment.emplace(seg, r).first->second, r) << "point " << i;
+  }
+  EXPECT_EQ(static_cast<int>(segment_of_root.size()), s.num_segments);
+  EXPECT_GT(s.num_segments, 100);  // a real scene, not one blob
 }
 
 TEST(GeometricLabeller, RealScanSameOnEveryThreadAndRun) {

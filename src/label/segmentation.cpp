@@ -29,6 +29,8 @@ class VoxelHash {
   int insert(uint64_t key, int next) {
     Slot* slot = probe(key);
     if (slot->key == kEmpty) {
+      const uint64_t bit = filterBit(key);
+      filter_[bit >> 6] |= uint64_t{1} << (bit & 63);
       slot->key = key;
       slot->value = next;
       if (++size_ * 2 > slots_.size()) resize(slots_.size() * 2);
@@ -37,6 +39,7 @@ class VoxelHash {
     return slot->value;
   }
   int find(uint64_t key) const {
+    if (!mayContain(key)) return -1;
     for (size_t i = hash(key);; i = (i + 1) & mask_) {
       if (slots_[i].key == key) return slots_[i].value;
       if (slots_[i].key == kEmpty) return -1;
@@ -48,6 +51,14 @@ class VoxelHash {
     uint64_t key = kEmpty;
     int value = -1;
   };
+  /// Most finds are of empty neighbours; a bit per hashed key in a table small enough for the L2 cache (128 KB,
+  /// ~2 % false positives at 25,000 voxels) answers them without touching the slots.
+  static constexpr int kFilterBits = 20;
+  static size_t filterBit(uint64_t key) { return static_cast<size_t>((key * 0xC2B2AE3D27D4EB4Full) >> (64 - kFilterBits)); }
+  bool mayContain(uint64_t key) const {
+    const size_t bit = filterBit(key);
+    return (filter_[bit >> 6] >> (bit & 63)) & 1;
+  }
   // Fibonacci hashing: the top bits of the product mix every bit of the key.
   size_t hash(uint64_t key) const { return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_); }
   Slot* probe(uint64_t key) {
@@ -71,6 +82,7 @@ class VoxelHash {
     }
   }
   std::vector<Slot> slots_;
+  std::vector<uint64_t> filter_ = std::vector<uint64_t>(size_t{1} << (kFilterBits - 6), 0);
   size_t size_ = 0;
   size_t mask_ = 0;
   int shift_ = 60;

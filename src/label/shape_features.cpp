@@ -5,15 +5,6 @@
 
 namespace sgtllc::label {
 
-void Moments::add(const Eigen::Vector3f& p) {
-  const Eigen::Vector3d q = p.cast<double>();
-  if (count_ == 0) origin_ = q;
-  const Eigen::Vector3d d = q - origin_;
-  ++count_;
-  sum_ += d;
-  outer_ += d * d.transpose();
-}
-
 void Moments::merge(const Moments& other) {
   if (other.count_ == 0) return;
   if (count_ == 0) {

@@ -13,7 +13,26 @@ namespace sgtllc::label {
 /// so that far-away sets keep their precision.
 class Moments {
  public:
-  void add(const Eigen::Vector3f& p);
+  /// Inline: called for every non-ground point. The outer product is symmetric, so its six distinct products are
+  /// each added to both mirrored entries (the same sums as d dᵀ, in fewer multiplications).
+  void add(const Eigen::Vector3f& p) {
+    const Eigen::Vector3d q = p.cast<double>();
+    if (count_ == 0) origin_ = q;
+    const Eigen::Vector3d d = q - origin_;
+    ++count_;
+    sum_ += d;
+    const double xx = d.x() * d.x(), xy = d.x() * d.y(), xz = d.x() * d.z();
+    const double yy = d.y() * d.y(), yz = d.y() * d.z(), zz = d.z() * d.z();
+    outer_(0, 0) += xx;
+    outer_(0, 1) += xy;
+    outer_(0, 2) += xz;
+    outer_(1, 0) += xy;
+    outer_(1, 1) += yy;
+    outer_(1, 2) += yz;
+    outer_(2, 0) += xz;
+    outer_(2, 1) += yz;
+    outer_(2, 2) += zz;
+  }
   void merge(const Moments& other);
   long count() const { return count_; }
   Eigen::Vector3d mean() const;
