@@ -52,7 +52,7 @@ class VoxelHash {
     int value = -1;
   };
   /// Most finds are of empty neighbours; a bit per hashed key in a table small enough for the L2 cache (128 KB,
-  /// ~2 % false positives at 25,000 voxels) answers them without touching the slots.
+  /// under 1 % false positives at the 5,000-10,000 voxels of a KITTI scan) answers them without touching the slots.
   static constexpr int kFilterBits = 20;
   static size_t filterBit(uint64_t key) { return static_cast<size_t>((key * 0xC2B2AE3D27D4EB4Full) >> (64 - kFilterBits)); }
   bool mayContain(uint64_t key) const {
