@@ -175,9 +175,10 @@ TEST(Segmentation, RealScanMatchesBruteForceComponents) {
   std::map<std::array<int, 3>, int> voxel_of;
   std::vector<int> point_voxel(pts.size());
   for (size_t i = 0; i < pts.size(); ++i) {
-    const std::array<int, 3> c = {static_cast<int>(std::floor(pts[i].x() / leaf)),
-                                  static_cast<int>(std::floor(pts[i].y() / leaf)),
-                                  static_cast<int>(std::floor(pts[i].z() / leaf))};
+    const double inv = 1.0 / leaf;  // the cell arithmetic of segmentVoxels, so boundary points agree
+    const std::array<int, 3> c = {static_cast<int>(std::floor(pts[i].x() * inv)),
+                                  static_cast<int>(std::floor(pts[i].y() * inv)),
+                                  static_cast<int>(std::floor(pts[i].z() * inv))};
     point_voxel[i] = voxel_of.emplace(c, static_cast<int>(voxel_of.size())).first->second;
   }
   std::vector<int> parent(voxel_of.size());
