@@ -8,6 +8,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "sgtllc/map/map_file.h"
+#include "sgtllc/map/relocalization_tracker.h"
 #include "sgtllc/map/relocalizer.h"
 
 namespace sgtllc::python {
@@ -28,9 +29,18 @@ namespace {
 
 /// Relocalizer queries are not thread-safe (a kd-tree database grows on the first query): one lock per object.
 struct PyRelocalizer {
-  PyRelocalizer(const map::Map& m, const Config& config) : relocalizer(copyMap(m), config) {}
+  PyRelocalizer(const map::Map& m, const Config& config, int num_candidates)
+      : relocalizer(copyMap(m), config, "map", map::RelocalizerOptions{num_candidates}) {}
   map::Relocalizer relocalizer;
   std::mutex mutex;
+};
+
+/// A stream over one relocalizer (kept alive by the binding); the relocalizer's lock guards both.
+struct PyTracker {
+  PyTracker(PyRelocalizer& r, const map::TrackingOptions& options) : owner(r), tracker(r.relocalizer, options) {}
+  PyRelocalizer& owner;
+  map::RelocalizationTracker tracker;
+  void reset_() { tracker.reset(); }
 };
 
 }  // namespace
@@ -76,8 +86,10 @@ void bindMap(py::module_& m) {
   py::class_<map::Relocalization>(m, "Relocalization", "Where a query frame is in a map.")
       .def_readonly("search", &map::Relocalization::search, "the candidates and their verification (FrameResult)")
       .def_readonly("map_frame", &map::Relocalization::map_frame, "best verified map frame, or -1")
-      .def_readonly("localized", &map::Relocalization::localized, "the best candidate's score_t > sigma_4")
+      .def_readonly("localized", &map::Relocalization::localized, "the best candidate's score_t > sigma_4, or tracked")
       .def_readonly("score", &map::Relocalization::score, "score_t of the best candidate (0 if none)")
+      .def_readonly("tracked", &map::Relocalization::tracked,
+                    "accepted by a RelocalizationTracker's agreement with the track, not by sigma_4")
       .def_property_readonly("T_mapframe_query",
                              [](const map::Relocalization& r) { return matrixToArray(r.T_mapframe_query); },
                              "(4, 4): p_mapframe = T_mapframe_query @ p_query")
@@ -90,8 +102,10 @@ void bindMap(py::module_& m) {
 
   py::class_<PyRelocalizer>(m, "Relocalizer",
                             "Queries frames against a map: every map frame is eligible, nothing is inserted.")
-      .def(py::init<const map::Map&, const Config&>(), py::arg("map"), py::arg("config") = Config{},
-           "Raises sgtllc.Error if the map was built with other map fields than config's.")
+      .def(py::init<const map::Map&, const Config&, int>(), py::arg("map"), py::arg("config") = Config{},
+           py::arg("num_candidates") = map::RelocalizerOptions{}.num_candidates,
+           "Raises sgtllc.Error if the map was built with other map fields than config's. num_candidates: "
+           "shortlist per query (0 = config.retrieval.num_candidates).")
       .def("localize",
            [](PyRelocalizer& r, const ArrayLike& points, const ArrayLike& labels, bool drop_nonfinite) {
              LabeledCloud cloud = cloudFromArrays(points, labels, "", drop_nonfinite);
@@ -110,6 +124,28 @@ void bindMap(py::module_& m) {
              return r.relocalizer.localize(std::move(nodes));
            },
            py::arg("centres"), py::arg("classes"), "Ready-made nodes against the map. Returns a Relocalization.");
+
+  py::class_<PyTracker>(m, "RelocalizationTracker",
+                        "Relocalizes consecutive frames of one stream: a weaker verified answer is accepted when it "
+                        "agrees with the last accepted one (docs/relocalization.md).")
+      .def(py::init([](PyRelocalizer& r, double weak_sigma, double gate_m, double max_speed_m_per_frame, int window) {
+             return std::make_unique<PyTracker>(r, map::TrackingOptions{weak_sigma, gate_m, max_speed_m_per_frame,
+                                                                        window});
+           }),
+           py::arg("relocalizer"), py::arg("weak_sigma") = map::TrackingOptions{}.weak_sigma,
+           py::arg("gate_m") = map::TrackingOptions{}.gate_m,
+           py::arg("max_speed_m_per_frame") = map::TrackingOptions{}.max_speed_m_per_frame,
+           py::arg("window") = map::TrackingOptions{}.window, py::keep_alive<1, 2>())
+      .def("localize_nodes",
+           [](PyTracker& t, const ArrayLike& centres, const ArrayLike& classes) {
+             std::vector<Node> nodes =
+                 nodesFromArrays(centres, classes, "", t.owner.relocalizer.config().numClasses());
+             py::gil_scoped_release release;
+             std::lock_guard<std::mutex> lock(t.owner.mutex);
+             return t.tracker.localize(std::move(nodes));
+           },
+           py::arg("centres"), py::arg("classes"), "The next frame of the stream. Returns a Relocalization.")
+      .def("reset", &PyTracker::reset_, "Forgets the track.");
 }
 
 }  // namespace sgtllc::python

@@ -56,7 +56,12 @@ void bindRelocalization(py::module_& m) {
       .def_readonly("pose_success", &RelocalizationMetrics::pose_success, "pose_successes / accepted_near")
       .def_readonly("rte_mean_m", &RelocalizationMetrics::rte_mean_m, "over the pose successes")
       .def_readonly("rre_mean_deg", &RelocalizationMetrics::rre_mean_deg, "over the pose successes")
-      .def_readonly("false_rate", &RelocalizationMetrics::false_rate, "accepted_negatives / negatives");
+      .def_readonly("false_rate", &RelocalizationMetrics::false_rate, "accepted_negatives / negatives")
+      .def_readonly("accepted_placed", &RelocalizationMetrics::accepted_placed,
+                    "accepted with the estimated pose within RTE < 2 m, RRE < 5 deg of the truth")
+      .def_readonly("positives_placed", &RelocalizationMetrics::positives_placed, "accepted_placed of positives")
+      .def_readonly("precision_pose", &RelocalizationMetrics::precision_pose, "accepted_placed / accepted")
+      .def_readonly("recall_at_1_pose", &RelocalizationMetrics::recall_at_1_pose, "positives_placed / positives");
   m.def("relocalization_metrics",
         [](const std::vector<RelocalizationQuery>& queries, const ArrayLike& map_poses, const ArrayLike& query_poses,
            const RelocalizationProtocol& protocol) {

@@ -323,10 +323,16 @@ class Relocalization:
     score: float
     T_mapframe_query: np.ndarray
     T_world_query: Optional[np.ndarray]
+    tracked: bool
 class Relocalizer:
-    def __init__(self, map: Map, config: Config = ...) -> None: ...
+    def __init__(self, map: Map, config: Config = ..., num_candidates: int = 50) -> None: ...
     def localize(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> Relocalization: ...
     def localize_nodes(self, centres: ArrayLike, classes: ArrayLike) -> Relocalization: ...
+class RelocalizationTracker:
+    def __init__(self, relocalizer: Relocalizer, weak_sigma: float = 0.2, gate_m: float = 3.0,
+                 max_speed_m_per_frame: float = 2.0, window: int = 10) -> None: ...
+    def localize_nodes(self, centres: ArrayLike, classes: ArrayLike) -> Relocalization: ...
+    def reset(self) -> None: ...
 
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
@@ -429,6 +435,10 @@ class RelocalizationMetrics:
     rte_mean_m: Optional[float]
     rre_mean_deg: Optional[float]
     false_rate: Optional[float]
+    accepted_placed: int
+    positives_placed: int
+    precision_pose: Optional[float]
+    recall_at_1_pose: Optional[float]
 def relocalization_metrics(queries: Sequence[RelocalizationQuery], map_poses: ArrayLike, query_poses: ArrayLike,
                            protocol: RelocalizationProtocol = ...) -> RelocalizationMetrics: ...
 

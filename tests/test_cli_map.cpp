@@ -136,6 +136,21 @@ TEST_F(CliMap, EvalWithAMapScoresTheRelocalizationProtocol) {
   EXPECT_DOUBLE_EQ(j["reloc_recall_at_1"].get<double>(), j["reloc_accepted_near"].get<double>() / positives);
   EXPECT_GE(j["reloc_pose_success"].get<double>(), 0.9);
   for (const char* key : {"reloc_precision", "reloc_false_rate"}) EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["track"], false);
+  EXPECT_GE(j["reloc_accepted_placed"].get<int>(), j["reloc_pose_successes"].get<int>());
+
+  // --track: the same frames as one stream; every answer accepted alone stays accepted, and localize agrees.
+  const auto tracked = test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --map " +
+                                 path("m.sgtmap") + " --config " + path("config.yaml") + " --json --track", false);
+  ASSERT_EQ(tracked.status, 0) << tracked.out;
+  const nlohmann::json t = nlohmann::json::parse(tracked.out);
+  EXPECT_EQ(t["track"], true);
+  EXPECT_GE(t["reloc_accepted"].get<int>(), j["reloc_accepted"].get<int>());
+  const auto tracked_hits = test::run("localize --map " + path("m.sgtmap") + " --nodes " + path("s3/nodes") +
+                                      " --config " + path("config.yaml") + " --json --track", false);
+  ASSERT_EQ(tracked_hits.status, 0) << tracked_hits.out;
+  EXPECT_EQ(t["reloc_accepted"], nlohmann::json::parse(tracked_hits.out)["localized"]);
+  EXPECT_EQ(test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --track").status, 2);
 
   const auto report = test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --map " +
                                 path("m.sgtmap") + " --report " + path("r"));

@@ -83,6 +83,16 @@ TEST(Relocalization, CountsAndRatiosOfAHandBuiltRun) {
   EXPECT_NEAR(*m.rte_mean_m, 0.25, 1e-12);
   EXPECT_NEAR(*m.rre_mean_deg, 1.0, 1e-9);
   EXPECT_DOUBLE_EQ(*m.false_rate, 0.5);
+  // Judged by the pose in the world: 0, 1 and 7 are placed, and so is 2, whose pose is right although the frame it
+  // names is 10 m away; 4 (3 m off) and 5 (30 m off) are not.
+  EXPECT_EQ(m.accepted_placed, 4);
+  EXPECT_EQ(m.positives_placed, 3);
+  EXPECT_DOUBLE_EQ(*m.precision_pose, 4.0 / 6.0);
+  EXPECT_DOUBLE_EQ(*m.recall_at_1_pose, 3.0 / 5.0);
+  const nlohmann::ordered_json j = relocalizationJson(m);
+  EXPECT_DOUBLE_EQ(j.at("reloc_precision_pose").get<double>(), 4.0 / 6.0);
+  EXPECT_DOUBLE_EQ(j.at("reloc_recall_at_1_pose").get<double>(), 3.0 / 5.0);
+  EXPECT_EQ(j.at("reloc_accepted_placed").get<int>(), 4);
 }
 
 TEST(Relocalization, ThresholdsAreInclusiveAtThreeAndExclusiveAtTwenty) {
@@ -106,7 +116,7 @@ TEST(Relocalization, RatiosWithoutADenominatorAreNotAvailable) {
   RelocalizationMetrics m = relocalizationMetrics({}, map, {pose(0, 0)});
   EXPECT_EQ(m.queries, 0);
   EXPECT_FALSE(m.recall_at_1 || m.precision || m.precision_no_between || m.pose_success || m.rte_mean_m ||
-               m.rre_mean_deg || m.false_rate);
+               m.rre_mean_deg || m.false_rate || m.precision_pose || m.recall_at_1_pose);
   // One positive, nothing accepted: recall 0, the rest n/a.
   m = relocalizationMetrics({query(0, -1, false, kNone)}, map, {pose(1, 0)});
   ASSERT_TRUE(m.recall_at_1);

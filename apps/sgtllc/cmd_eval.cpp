@@ -7,6 +7,7 @@
 #include "build_info.h"
 #include "commands.h"
 #include "common.h"
+#include "localization.h"
 #include "loop_closing.h"
 #include "relocalization_eval.h"
 #include "trajectory_metrics.h"
@@ -31,6 +32,7 @@ struct EvalCliOptions {
   bool json = false;
   bool force = false;
   bool no_pairs = false;  ///< --no-pairs: skip the folder's loop_pairs.txt
+  bool track = false;     ///< --track (with --map): the query frames are one stream
   std::string command;
 };
 
@@ -304,8 +306,10 @@ void addEvalCommand(CLI::App& app) {
   cmd->add_option("--map", o->map,
                   "the relocalization protocol instead: relocalize every frame in this map (`sgtllc run --save-map` "
                   "of an earlier session) and score against both sessions' poses (docs/relocalization.md)");
+  addTrackOption(cmd, &o->track);
   cmd->add_flag("--force", o->force, "overwrite an existing report in --report (and existing output files)");
   cmd->callback([o] {
+    if (o->track && o->map.empty()) throw CLI::ValidationError("eval", "--track needs --map");
     if (o->odometry.empty() && ((!o->calib.empty() && o->accumulate == 1) || !o->outputs.trajectory.empty() ||
                                 !o->outputs.graph.empty() || !o->outputs.loops.empty())) {
       throw CLI::ValidationError("eval", "--calib (without --accumulate), --out-trajectory, --out-graph and "
@@ -323,7 +327,7 @@ void addEvalCommand(CLI::App& app) {
                                            "--report and --accumulate");
       }
       evalRelocalization(o->map, o->sequence, o->nodes, o->labels_dir,
-                         loadConfigOption(o->config, o->threads, o->labeller), o->json);
+                         loadConfigOption(o->config, o->threads, o->labeller), o->json, trackingOption(o->track));
       return;
     }
     o->command = commandLine();

@@ -20,6 +20,7 @@ struct LocalizeOptions {
   int threads = 0;
   bool json = false;
   bool force = false;
+  bool track = false;  ///< --track: the frames are one stream (map::RelocalizationTracker)
 };
 
 /// The shortest text that reads back to @p v (as the project's other CSV writers).
@@ -80,7 +81,8 @@ std::string hitLine(const Hit& h) {
     const Eigen::Vector3d w = h.r.T_world_query->topRightCorner<3, 1>();
     line += "  map position (" + fixed(w.x(), 2) + ", " + fixed(w.y(), 2) + ", " + fixed(w.z(), 2) + ") m";
   }
-  return line + (h.r.localized ? "" : "  (below verification.sigma_4: not localized)");
+  return line + (h.r.tracked ? "  (below verification.sigma_4, agrees with the track)"
+                 : h.r.localized ? "" : "  (below verification.sigma_4: not localized)");
 }
 
 void localizeCommand(const LocalizeOptions& o) {
@@ -93,16 +95,17 @@ void localizeCommand(const LocalizeOptions& o) {
   std::vector<double> frame_ms;
   int localized = 0;
   Progress progress("frames", source.size());
+  const auto on_hit = [&](size_t index, const Hit& h) {
+    localized += h.r.localized;
+    frame_ms.push_back(h.r.search.timing.total_ms());
+    if (!o.json) {
+      progress.clear();
+      std::cout << hitLine(h) << "\n";
+    }
+    progress.update(index + 1, std::to_string(localized) + " localized");
+  };
   const std::vector<Hit> hits =
-      localizeSequence(source, relocalizer, query_name, o.map, config.threads, [&](size_t index, const Hit& h) {
-        localized += h.r.localized;
-        frame_ms.push_back(h.r.search.timing.total_ms());
-        if (!o.json) {
-          progress.clear();
-          std::cout << hitLine(h) << "\n";
-        }
-        progress.update(index + 1, std::to_string(localized) + " localized");
-      });
+      localizeSequence(source, relocalizer, query_name, o.map, config.threads, trackingOption(o.track), on_hit);
   progress.finish();
   if (!o.out.empty()) writeOutput(o.out, hitsCsv(hits), o.force);
 
@@ -111,7 +114,7 @@ void localizeCommand(const LocalizeOptions& o) {
     Json list = Json::array();
     for (const Hit& h : hits) {
       Json j = {{"query", h.query}, {"map_frame", h.map_frame.empty() ? Json() : Json(h.map_frame)},
-                {"localized", h.r.localized}, {"score", h.r.score}};
+                {"localized", h.r.localized}, {"tracked", h.r.tracked}, {"score", h.r.score}};
       if (!h.map_frame.empty()) j["T_mapframe_query"] = matrixJson(h.r.T_mapframe_query);
       if (h.r.T_world_query) j["T_world_query"] = matrixJson(*h.r.T_world_query);
       list.push_back(std::move(j));
@@ -120,6 +123,7 @@ void localizeCommand(const LocalizeOptions& o) {
                            {"map_frames", m.size()},
                            {"map_poses", m.hasPoses()},
                            {"sequence", query_name},
+                           {"track", o.track},
                            {"frames", hits.size()},
                            {"localized", localized},
                            {"localized_share", share},
@@ -155,6 +159,7 @@ void addLocalizeCommand(CLI::App& app) {
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and every frame's answer as one JSON object");
   cmd->add_flag("--force", o->force, "overwrite an existing --out file");
+  addTrackOption(cmd, &o->track);
   cmd->callback([o] {
     if (o->sequence.empty() == o->nodes.empty()) {
       throw CLI::ValidationError("localize", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");

@@ -29,6 +29,10 @@ std::string summaryText(const eval::RelocalizationMetrics& m) {
          std::to_string(m.accepted_near) + "), mean RTE " +
          (m.rte_mean_m ? fixed(*m.rte_mean_m, 3) + " m" : std::string("n/a")) + ", RRE " +
          (m.rre_mean_deg ? fixed(*m.rre_mean_deg, 3) + " deg" : std::string("n/a")) +
+         "\njudged by the pose (RTE < 2 m, RRE < 5 deg in the map's world frame, whatever frame is named): "
+         "precision " + ratio(m.precision_pose) + " (" + std::to_string(m.accepted_placed) + " of " +
+         std::to_string(m.accepted) + "), recall@1 " + ratio(m.recall_at_1_pose) + " (" +
+         std::to_string(m.positives_placed) + " of " + std::to_string(m.positives) + ")" +
          "\nfalse relocalizations " + ratio(m.false_rate) + " (" + std::to_string(m.accepted_negatives) + " of " +
          std::to_string(m.negatives) + " frames with no map frame within 20 m)\n";
 }
@@ -36,7 +40,8 @@ std::string summaryText(const eval::RelocalizationMetrics& m) {
 }  // namespace
 
 void evalRelocalization(const std::string& map_path, const std::string& sequence, const std::string& nodes,
-                        const std::string& labels_dir, const Config& config, bool json) {
+                        const std::string& labels_dir, const Config& config, bool json,
+                        const std::optional<map::TrackingOptions>& tracking) {
   const eval::FrameSource source = frameSource(sequence, nodes, config, labels_dir);
   const std::string poses_path = (fs::path(sequence) / "poses.txt").string();
   if (!fs::exists(poses_path)) {
@@ -59,7 +64,7 @@ void evalRelocalization(const std::string& map_path, const std::string& sequence
   std::vector<double> frame_ms;
   int accepted = 0;
   Progress progress("frames", source.size());
-  localizeSequence(source, relocalizer, query_name, map_path, config.threads, [&](size_t index, const Hit& h) {
+  const auto on_hit = [&](size_t index, const Hit& h) {
     eval::RelocalizationQuery q;
     q.query_number = source.number(index);
     if (q.query_number < 0) throw Error(query_name + ": frame " + source.name(index) + " is not a frame number");
@@ -71,18 +76,20 @@ void evalRelocalization(const std::string& map_path, const std::string& sequence
     frame_ms.push_back(h.r.search.timing.total_ms());
     accepted += q.accepted;
     progress.update(index + 1, std::to_string(accepted) + " relocalized");
-  });
+  };
+  localizeSequence(source, relocalizer, query_name, map_path, config.threads, tracking, on_hit);
   progress.finish();
   const eval::RelocalizationMetrics metrics = eval::relocalizationMetrics(queries, map_poses, query_poses);
   const double median = eval::percentile(frame_ms, 0.5), p99 = eval::percentile(frame_ms, 0.99);
   if (json) {
-    Json j = {{"map", map_path}, {"map_frames", m.size()}, {"sequence", query_name}};
+    Json j = {{"map", map_path}, {"map_frames", m.size()}, {"sequence", query_name}, {"track", tracking.has_value()}};
     j.update(eval::relocalizationJson(metrics));
     j["ms_per_frame_median"] = median;
     j["ms_per_frame_p99"] = p99;
     std::cout << jsonText(j) << "\n";
   } else {
-    std::cout << "map " << map_path << " (" << m.size() << " frames), queries " << query_name << "\n"
+    std::cout << "map " << map_path << " (" << m.size() << " frames), queries " << query_name
+              << (tracking ? " as one stream (--track)" : "") << "\n"
               << summaryText(metrics) << "ms per frame: median " << fixed(median, 2) << ", p99 " << fixed(p99, 2)
               << " (load not included)\n";
   }

@@ -70,6 +70,28 @@ def test_save_load_localize(tmp_path):
     assert localized >= 18
 
 
+def test_shortlist_and_tracker():
+    poses, frames = session(100)
+    detector = sgtllc.LoopDetector(config())
+    for centres, classes in frames:
+        detector.process_nodes(centres, classes)
+    m = detector.to_map([f"{i:06d}" for i in range(100)], np.array(poses))
+    second_poses, second = session(10, offset=3.0, phase=0.9, seed=99)
+    wide, own = sgtllc.Relocalizer(m, config()), sgtllc.Relocalizer(m, config(), num_candidates=0)
+    assert len(wide.localize_nodes(*second[0]).search.candidates) == 50
+    assert len(own.localize_nodes(*second[0]).search.candidates) == config().retrieval.num_candidates
+    tracker = sgtllc.RelocalizationTracker(wide, window=5)
+    for T, (centres, classes) in zip(second_poses, second):
+        r, alone = tracker.localize_nodes(centres, classes), wide.localize_nodes(centres, classes)
+        if alone.localized:  # an answer above sigma_4 is the same in the stream
+            assert not r.tracked and r.map_frame == alone.map_frame
+        if r.localized:
+            assert np.linalg.norm(r.T_world_query[:3, 3] - T[:3, 3]) < 0.3
+    tracker.reset()
+    with pytest.raises(sgtllc.Error, match="gate_m"):
+        sgtllc.RelocalizationTracker(wide, gate_m=0.0)
+
+
 def test_resume_equals_one_run():
     _, frames = session(130)
     one = sgtllc.LoopDetector(config())

@@ -69,6 +69,11 @@ RelocalizationMetrics relocalizationMetrics(const std::vector<RelocalizationQuer
     ++m.accepted;
     m.accepted_negatives += negative;
     const Eigen::Isometry3d& T_world_map = map_poses[static_cast<size_t>(q.map_frame)];
+    const PoseError placed = poseError((T_world_map * q.T_mapframe_query).matrix(), T_world_query.matrix());
+    if (placed.succeeds(protocol.max_translation_m, protocol.max_rotation_deg)) {
+      ++m.accepted_placed;
+      m.positives_placed += positive;
+    }
     const double returned = distance(T_world_query, T_world_map);
     if (returned > protocol.negative_distance) {
       ++m.accepted_far;
@@ -91,6 +96,8 @@ RelocalizationMetrics relocalizationMetrics(const std::vector<RelocalizationQuer
     m.rre_mean_deg = poses.rre_mean;
   }
   m.false_rate = ratio(m.accepted_negatives, m.negatives);
+  m.precision_pose = ratio(m.accepted_placed, m.accepted);
+  m.recall_at_1_pose = ratio(m.positives_placed, m.positives);
   return m;
 }
 
@@ -102,6 +109,8 @@ nlohmann::ordered_json relocalizationJson(const RelocalizationMetrics& m) {
           {"reloc_precision_no_between", optionalJson(m.precision_no_between)},
           {"reloc_rte_mean_m", optionalJson(m.rte_mean_m)},
           {"reloc_rre_mean_deg", optionalJson(m.rre_mean_deg)},
+          {"reloc_precision_pose", optionalJson(m.precision_pose)},
+          {"reloc_recall_at_1_pose", optionalJson(m.recall_at_1_pose)},
           {"reloc_queries", m.queries},
           {"reloc_positives", m.positives},
           {"reloc_negatives", m.negatives},
@@ -110,7 +119,9 @@ nlohmann::ordered_json relocalizationJson(const RelocalizationMetrics& m) {
           {"reloc_accepted_between", m.accepted_between},
           {"reloc_accepted_far", m.accepted_far},
           {"reloc_accepted_negatives", m.accepted_negatives},
-          {"reloc_pose_successes", m.pose_successes}};
+          {"reloc_pose_successes", m.pose_successes},
+          {"reloc_accepted_placed", m.accepted_placed},
+          {"reloc_positives_placed", m.positives_placed}};
 }
 
 }  // namespace sgtllc::eval

@@ -1,6 +1,7 @@
 #include "sgtllc/map/relocalizer.h"
 
 #include <chrono>
+#include <string>
 #include <utility>
 
 #include <Eigen/LU>
@@ -8,6 +9,7 @@
 #include "kdtree_index.h"
 #include "sgtllc/frame.h"
 #include "sgtllc/retrieval/retrieval_key.h"
+#include "sgtllc/types.h"
 
 namespace sgtllc::map {
 namespace {
@@ -17,11 +19,21 @@ const Config& validated(const Config& config) {
   return config;
 }
 
+/// The configuration the relocalizer searches with: the detector's, with the relocalizer's own shortlist size.
+Config withCandidates(const Config& config, int num_candidates) {
+  if (num_candidates < 0 || num_candidates > 1000) {
+    throw Error("relocalizer: num_candidates = " + std::to_string(num_candidates) + " is out of range [0, 1000]");
+  }
+  Config c = config;
+  if (num_candidates > 0) c.retrieval.num_candidates = num_candidates;
+  return c;
+}
+
 }  // namespace
 
-Relocalizer::Relocalizer(Map map, const Config& config, const std::string& source)
+Relocalizer::Relocalizer(Map map, const Config& config, const std::string& source, RelocalizerOptions options)
     : map_(std::move(map)),
-      config_(validated(config)),
+      config_(withCandidates(validated(config), options.num_candidates)),
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads) {
   checkCompatible(map_, config_, source);
   if (map_.hasPoses()) positions_ = std::make_shared<const PositionIndex>(map_.poses);
@@ -70,24 +82,35 @@ int Relocalizer::nearestMapFrame(const Eigen::Vector3d& at) const {
 }
 
 Relocalization Relocalizer::localize(std::vector<Node> nodes) const {
-  Relocalization r;
+  FrameResult search;
   const auto start = std::chrono::steady_clock::now();
   // The query is described exactly as the detector describes a frame (LoopDetector::processNodes).
   const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
                                               /*with_global=*/false, config_.numClasses());
   const std::vector<float> key = retrieval::computeRetrievalKey(query.graph, config_);
-  r.search.num_nodes = query.numNodes();
-  r.search.timing.description_ms =
+  search.num_nodes = query.numNodes();
+  search.timing.description_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  searchDatabase(query, key, map_.database, map_.size() - 1, config_, &r.search);
-  if (r.search.best < 0) return r;
-  const Candidate& best = r.search.candidates[static_cast<size_t>(r.search.best)];
-  r.map_frame = best.frame;
+  searchDatabase(query, key, map_.database, map_.size() - 1, config_, &search);
+  const int best = search.best;
+  return answerWith(std::move(search), best);
+}
+
+Relocalization Relocalizer::answerWith(FrameResult search, int candidate) const {
+  Relocalization r;
+  r.search = std::move(search);
+  if (candidate < 0) return r;
+  if (static_cast<size_t>(candidate) >= r.search.candidates.size()) {
+    throw Error("relocalizer: candidate " + std::to_string(candidate) + " of " +
+                std::to_string(r.search.candidates.size()));
+  }
+  const Candidate& chosen = r.search.candidates[static_cast<size_t>(candidate)];
+  r.map_frame = chosen.frame;
   r.localized = r.search.is_loop;
-  r.score = best.match.score_t;
-  r.T_mapframe_query = best.match.T_match_query;
+  r.score = chosen.match.score_t;
+  r.T_mapframe_query = chosen.match.T_match_query;
   if (!map_.hasPoses()) return r;
-  r.T_world_query = map_.poses[static_cast<size_t>(best.frame)] * r.T_mapframe_query;
+  r.T_world_query = map_.poses[static_cast<size_t>(chosen.frame)] * r.T_mapframe_query;
   // The verified frame may be a neighbour of the place along the old pass or across the street (the top-1 choice
   // is among near-equal scores); with poses, the answer is the map frame nearest to where the query is estimated
   // to be, ties to the lower frame.

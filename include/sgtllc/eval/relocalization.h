@@ -41,6 +41,10 @@ struct RelocalizationMetrics {
   int accepted_near = 0, accepted_between = 0, accepted_far = 0;
   int accepted_negatives = 0;  ///< accepted relocalizations of negative queries (all false by definition)
   int pose_successes = 0;      ///< correct relocalizations whose pose error is within the success thresholds
+  /// Accepted relocalizations whose estimated pose in the world, T_world_map · T_mapframe_query, lies within the
+  /// success thresholds of the query's true pose, whatever map frame was returned: the query is placed correctly.
+  int accepted_placed = 0;
+  int positives_placed = 0;  ///< accepted_placed of positive queries
 
   std::optional<double> recall_at_1;  ///< accepted_near / positives
   std::optional<double> precision;    ///< accepted_near / accepted
@@ -51,6 +55,10 @@ struct RelocalizationMetrics {
   std::optional<double> rte_mean_m;    ///< mean RTE over the pose successes (as published tables), m
   std::optional<double> rre_mean_deg;  ///< mean RRE over the pose successes, deg
   std::optional<double> false_rate;    ///< accepted_negatives / negatives
+  /// The pose-judged figures (docs/relocalization.md, "Judged by the pose"): accepted_placed / accepted, and
+  /// positives_placed / positives.
+  std::optional<double> precision_pose;
+  std::optional<double> recall_at_1_pose;
 };
 
 /// Scores @p queries. @p map_poses and @p query_poses are T_world_lidar of every map frame and every frame of the

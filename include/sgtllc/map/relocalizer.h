@@ -25,7 +25,9 @@ struct Relocalization {
   /// the query's estimated position T_world_query (the verified candidate, search.candidates[search.best], may be
   /// a neighbour of the place); without, the verified candidate itself.
   int map_frame = -1;
-  bool localized = false;  ///< the best candidate is a loop (score_t > verification.sigma_4)
+  /// The best candidate is a loop (score_t > verification.sigma_4), or a RelocalizationTracker accepted the answer
+  /// (tracked).
+  bool localized = false;
   double score = 0.0;      ///< score_t of the best candidate (0 if none)
   /// Maps query points into map frame @p map_frame (identity if none): with map poses,
   /// T_world_mapframe⁻¹ · T_world_query.
@@ -33,6 +35,18 @@ struct Relocalization {
   /// The query's pose in the map's world frame, T_world_mapframe · T_mapframe_query, when the map has poses and a
   /// candidate was chosen.
   std::optional<Eigen::Matrix4d> T_world_query;
+  /// Accepted by a RelocalizationTracker's agreement with the track, not by σ_4 (search.is_loop false; search.best
+  /// is the candidate that agreed).
+  bool tracked = false;
+};
+
+/// Query-time settings of a Relocalizer (docs/relocalization.md, "Relocalizer settings").
+struct RelocalizerOptions {
+  /// Candidates retrieved and verified per query; 0 = the configuration's retrieval.num_candidates. A relocalized
+  /// frame has no recent frames to exclude and no loop to confirm later, so it affords a wider shortlist than the
+  /// online detector's 15: on the tuning world (docs/relocalization.md) the true place was outside the top 15 but in
+  /// the top 50 for a fifth of the misses, at about three times the verification time [0, 1000].
+  int num_candidates = 50;
 };
 
 /// Queries frames against a map: every map frame is eligible (no recent-frame exclusion, no warm-up) and nothing
@@ -42,12 +56,17 @@ class Relocalizer {
  public:
   /// Takes @p map over; throws MapError(kIncompatible) unless it was built with a configuration compatible with
   /// @p config (checkCompatible), and sgtllc::Error if @p config is invalid. @p source names the map in messages.
-  Relocalizer(Map map, const Config& config, const std::string& source = "map");
+  Relocalizer(Map map, const Config& config, const std::string& source = "map", RelocalizerOptions options = {});
 
   /// A labelled scan (sensor frame): its nodes are extracted with the configuration's clustering.
   Relocalization localize(const LabeledCloud& cloud) const;
   /// Ready-made nodes; throws sgtllc::Error as LoopDetector::process(nodes) does for bad nodes.
   Relocalization localize(std::vector<Node> nodes) const;
+
+  /// The answer that places the query by candidate @p candidate of @p search (an index into search.candidates,
+  /// verified: rejection kNone): localized iff search.is_loop, the pose and, with map poses, the map frame nearest
+  /// to the estimated position. @p candidate −1: no answer (map_frame −1).
+  Relocalization answerWith(FrameResult search, int candidate) const;
 
   const Map& map() const { return map_; }
   const Config& config() const { return config_; }

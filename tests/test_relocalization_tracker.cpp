@@ -1,0 +1,157 @@
+// The relocalizer's own shortlist and the stream tracker (include/sgtllc/map/relocalization_tracker.h) on hand-built
+// answers whose every decision is known in advance, and on the synthetic two-session world of test_map_support.h.
+#include <gtest/gtest.h>
+
+#include "sgtllc/map/map.h"
+#include "sgtllc/map/relocalization_tracker.h"
+#include "sgtllc/map/relocalizer.h"
+#include "sgtllc/types.h"
+#include "test_map_support.h"
+
+namespace sgtllc {
+namespace {
+
+Config trackerTestConfig() {
+  Config config;
+  config.retrieval.exclude_recent = 20;
+  return config;
+}
+
+map::Map circleMap(bool poses = true) {
+  const test::NodeSequence s = test::circleSequence(100);
+  const Config config = trackerTestConfig();
+  const LoopDetector detector = test::runNodes(s, config);
+  return map::makeMap(detector.database(), config, s.names, poses ? s.poses : std::vector<Eigen::Matrix4d>{});
+}
+
+/// A verified candidate: map frame @p frame, score_t @p score, the query @p dx m ahead of the frame (its x axis).
+Candidate candidate(int frame, double score, double dx = 0.0, Rejection rejection = Rejection::kNone) {
+  Candidate c;
+  c.frame = frame;
+  c.match.rejection = rejection;
+  c.match.score_t = score;
+  c.match.T_match_query = Eigen::Matrix4d::Identity();
+  c.match.T_match_query(0, 3) = dx;
+  return c;
+}
+
+/// The relocalizer's answer for a search with these candidates (best = the highest score, a loop above σ_4 0.3).
+map::Relocalization answer(const map::Relocalizer& r, std::vector<Candidate> candidates) {
+  FrameResult search;
+  search.candidates = std::move(candidates);
+  search.best = -1;
+  for (size_t c = 0; c < search.candidates.size(); ++c) {
+    const MatchResult& m = search.candidates[c].match;
+    if (m.rejection != Rejection::kNone) continue;
+    if (search.best < 0 || m.score_t > search.candidates[static_cast<size_t>(search.best)].match.score_t) {
+      search.best = static_cast<int>(c);
+    }
+  }
+  search.is_loop = search.best >= 0 && search.candidates[static_cast<size_t>(search.best)].match.score_t > 0.3;
+  const int best = search.best;
+  return r.answerWith(std::move(search), best);
+}
+
+TEST(RelocalizationTracker, AcceptsAWeakerAnswerOnlyWhereTheTrackIs) {
+  // Map frames lie 3.77 m apart on a circle of radius 60 m (100 per lap).
+  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig());
+  map::RelocalizationTracker tracker(relocalizer);  // weak 0.2, gate 3 m + 2 m per frame, window 10
+
+  // Before any accepted answer there is no track: a weak answer stays unaccepted.
+  map::Relocalization r = tracker.track(answer(relocalizer, {candidate(10, 0.25)}));
+  EXPECT_FALSE(r.localized);
+  EXPECT_FALSE(r.tracked);
+  // A strong answer starts the track at map frame 10.
+  r = tracker.track(answer(relocalizer, {candidate(10, 0.5)}));
+  EXPECT_TRUE(r.localized);
+  EXPECT_FALSE(r.tracked);
+  EXPECT_EQ(r.map_frame, 10);
+  // One frame on: frame 11 is 3.77 m away, within 3 + 2 m. The far candidate scores higher but disagrees.
+  r = tracker.track(answer(relocalizer, {candidate(11, 0.22), candidate(60, 0.29)}));
+  EXPECT_TRUE(r.localized);
+  EXPECT_TRUE(r.tracked);
+  EXPECT_EQ(r.map_frame, 11);
+  EXPECT_EQ(r.search.best, 0);
+  EXPECT_DOUBLE_EQ(r.score, 0.22);
+  // At or below weak_sigma, rejected, or too far from the track: not accepted (the track is held at frame 11).
+  EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(12, 0.2)})).localized);
+  EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(12, 0.28, 0.0, Rejection::kRansacFailed)})).localized);
+  // Two frames since frame 11: reach 3 + 2·3 = 9 m; frame 14 is 11.3 m away, frame 13 7.5 m.
+  EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(14, 0.28)})).localized);
+  r = tracker.track(answer(relocalizer, {candidate(14, 0.28, -4.0), candidate(13, 0.21)}));
+  EXPECT_TRUE(r.tracked);
+  // Its pose places the query 4 m behind frame 14, which the nearest-frame answer turns into frame 13.
+  EXPECT_EQ(r.map_frame, 13);
+  EXPECT_DOUBLE_EQ(r.score, 0.28);
+}
+
+TEST(RelocalizationTracker, LosesTheTrackAfterTheWindow) {
+  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig());
+  map::TrackingOptions options;
+  options.window = 3;
+  options.max_speed_m_per_frame = 10.0;
+  map::RelocalizationTracker tracker(relocalizer, options);
+  ASSERT_TRUE(tracker.track(answer(relocalizer, {candidate(20, 0.6)})).localized);
+  for (int k = 0; k < 2; ++k) EXPECT_FALSE(tracker.track(answer(relocalizer, {})).localized);
+  // The third frame since: still within the window.
+  EXPECT_TRUE(tracker.track(answer(relocalizer, {candidate(22, 0.25)})).tracked);
+  for (int k = 0; k < 3; ++k) EXPECT_FALSE(tracker.track(answer(relocalizer, {})).localized);
+  // The fourth frame since frame 22: the track is lost.
+  EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(22, 0.25)})).localized);
+  // reset() forgets it too.
+  ASSERT_TRUE(tracker.track(answer(relocalizer, {candidate(30, 0.6)})).localized);
+  tracker.reset();
+  EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(30, 0.25)})).localized);
+}
+
+TEST(RelocalizationTracker, TracksNothingWithoutMapPosesAndRefusesBadOptions) {
+  const map::Relocalizer relocalizer(circleMap(/*poses=*/false), trackerTestConfig());
+  map::RelocalizationTracker tracker(relocalizer);
+  EXPECT_TRUE(tracker.track(answer(relocalizer, {candidate(10, 0.5)})).localized);
+  EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(10, 0.25)})).localized);
+  map::TrackingOptions bad;
+  bad.gate_m = 0.0;
+  try {
+    map::RelocalizationTracker(relocalizer, bad);
+    FAIL() << "a zero gate was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("gate_m"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Relocalizer, VerifiesItsOwnShortlist) {
+  const test::NodeSequence second = test::circleSequence(3, 3.0, 0.9, /*seed=*/99);
+  Config config = trackerTestConfig();
+  config.retrieval.num_candidates = 15;
+  const map::Relocalizer wide(circleMap(), config);  // default: 50
+  const map::Relocalizer own(circleMap(), config, "m", map::RelocalizerOptions{0});
+  const map::Relocalizer narrow(circleMap(), config, "m", map::RelocalizerOptions{4});
+  EXPECT_EQ(wide.localize(second.frames[0]).search.candidates.size(), 50u);
+  EXPECT_EQ(own.localize(second.frames[0]).search.candidates.size(), 15u);
+  EXPECT_EQ(narrow.localize(second.frames[0]).search.candidates.size(), 4u);
+  EXPECT_THROW(map::Relocalizer(circleMap(), config, "m", map::RelocalizerOptions{1001}), Error);
+}
+
+TEST(RelocalizationTracker, AStreamOfTheSecondSessionAgreesWithItsTruth) {
+  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig());
+  const test::NodeSequence second = test::circleSequence(30, 3.0, 0.9, /*seed=*/99);
+  map::RelocalizationTracker tracker(relocalizer);
+  int localized = 0;
+  for (size_t q = 0; q < second.frames.size(); ++q) {
+    const map::Relocalization r = tracker.localize(second.frames[q]);
+    const map::Relocalization alone = relocalizer.localize(second.frames[q]);
+    // A frame accepted alone is answered the same in the stream.
+    if (alone.localized) {
+      EXPECT_FALSE(r.tracked);
+      EXPECT_EQ(r.map_frame, alone.map_frame);
+    }
+    if (!r.localized) continue;
+    ++localized;
+    const Eigen::Vector3d error = r.T_world_query->topRightCorner<3, 1>() - second.poses[q].topRightCorner<3, 1>();
+    EXPECT_LT(error.norm(), 0.3) << "query " << q;
+  }
+  EXPECT_GE(localized, 27);
+}
+
+}  // namespace
+}  // namespace sgtllc
