@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "internal/described_cache.h"
 #include "sgtllc/parallel.h"
 #include "sgtllc/retrieval/retrieval_key.h"
 #include "sgtllc/selection.h"
@@ -23,14 +24,27 @@ const Config& validated(const Config& config) {
   return config;
 }
 
+/// Frames whose descriptions the online detector keeps (internal/described_cache.h). A frame's description is
+/// ~0.7 KB per node (49 slots, DescriptorConfig) plus its graph, so ~30 KB for 40 nodes and ~8 MB when full;
+/// the urban and suburban simulations' queries find ~85 % of their candidates here.
+constexpr size_t kDescribedCacheFrames = 256;
+
+void search(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database, int last,
+            const Config& config, FrameResult* result, internal::DescribedCache* cache);
+
 }  // namespace
 
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads),
       database_(config.retrieval, config.threads),
-      clouds_(config.registration, effectiveLabelConfig(config)) {
+      clouds_(config.registration, effectiveLabelConfig(config)),
+      described_(std::make_unique<internal::DescribedCache>(kDescribedCacheFrames)) {
 }
+
+LoopDetector::~LoopDetector() = default;
+LoopDetector::LoopDetector(LoopDetector&&) noexcept = default;
+LoopDetector& LoopDetector::operator=(LoopDetector&&) noexcept = default;
 
 LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopDetector(config) {
   if (database.size() > 0 && database.globalDimension() != retrieval::retrievalKeySize(config_)) {
@@ -98,7 +112,7 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   } else if (result.frame < rc.exclude_recent) {
     result.search = Search::kTooRecent;
   } else {
-    searchDatabase(query, key, database_, result.frame - rc.exclude_recent, config_, &result);
+    search(query, key, database_, result.frame - rc.exclude_recent, config_, &result, described_.get());
   }
 
   database_.add(StoredFrame{query.graph.nodes, std::move(key)});
@@ -107,6 +121,13 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
 
 void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database,
                     int last, const Config& config, FrameResult* result) {
+  search(query, key, database, last, config, result, nullptr);
+}
+
+namespace {
+
+void search(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database, int last,
+            const Config& config, FrameResult* result, internal::DescribedCache* cache) {
   auto start = Clock::now();
   std::vector<RetrievedFrame> retrieved = database.query(key, last, config.retrieval.num_candidates);
   result->timing.retrieval_ms = msSince(start);
@@ -115,14 +136,24 @@ void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, 
   start = Clock::now();
   std::sort(retrieved.begin(), retrieved.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
   result->candidates.assign(retrieved.size(), Candidate{});
+  // Cache look-ups and inserts stay on this thread, in frame order; workers describe the misses.
+  std::vector<std::shared_ptr<const DescribedFrame>> described(retrieved.size());
+  if (cache) {
+    for (size_t c = 0; c < retrieved.size(); ++c) described[c] = cache->find(retrieved[c].frame);
+  }
   parallelFor(static_cast<int>(retrieved.size()), config.threads, [&](int c) {
     Candidate& cand = result->candidates[c];
     cand.frame = retrieved[c].frame;
     cand.distance2 = retrieved[c].distance2;
-    const DescribedFrame candidate = describeFrame(database.nodes(cand.frame), config.graph, config.descriptor,
-                                                   /*with_global=*/false, config.numClasses());
-    cand.match = matchFrames(query, candidate, config);
+    if (!described[c]) {
+      described[c] = std::make_shared<const DescribedFrame>(describeFrame(
+          database.nodes(cand.frame), config.graph, config.descriptor, /*with_global=*/false, config.numClasses()));
+    }
+    cand.match = matchFrames(query, *described[c], config);
   });
+  if (cache) {
+    for (size_t c = 0; c < retrieved.size(); ++c) cache->insert(retrieved[c].frame, std::move(described[c]));
+  }
   std::vector<const MatchResult*> matches;
   for (const Candidate& cand : result->candidates) matches.push_back(&cand.match);
   result->best = selectCandidate(matches, config.verification);
@@ -131,6 +162,8 @@ void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, 
   result->is_loop = best && isLoop(best->match, config.verification);
   result->timing.verification_ms = msSince(start);
 }
+
+}  // namespace
 
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config) {
   config.validate();

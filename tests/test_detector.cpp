@@ -3,9 +3,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "sgtllc/detector.h"
+#include "sgtllc/retrieval/retrieval_key.h"
 #include "test_support.h"
 
 namespace sgtllc {
@@ -269,6 +271,35 @@ TEST(LoopDetector, BadFramesThrowErrorAndAreNotStored) {
   EXPECT_THROW(detector.process(mismatched), Error);
   EXPECT_EQ(detector.numFrames(), 1);
   EXPECT_THROW(comparePair(latticeNodes(13), latticeNodes(3), config), Error);
+}
+
+TEST(LoopDetector, KeptCandidateDescriptionsGiveTheResultsOfDescribingAfresh) {
+  // The detector keeps the descriptions of recently verified frames (a bounded cache, src/internal/
+  // described_cache.h); searchDatabase describes every candidate anew. 17 layouts, each drifting by 1 mm a frame,
+  // so each query's candidates are recent copies of its layout: the kept set turns over and frames are evicted.
+  Config config;
+  config.retrieval.exclude_recent = 5;
+  auto frameNodes = [](int k) {
+    std::vector<Node> nodes = latticeNodes(8 + k % 17);
+    nodes[0].centre.x() += 0.001 * k;
+    return nodes;
+  };
+  const int n = 420;
+  LoopDetector detector(config);
+  std::vector<FrameResult> online;
+  for (int k = 0; k < n; ++k) online.push_back(detector.process(frameNodes(k)));
+  std::vector<FrameResult> fresh(online.size());
+  for (int k = 0; k < n; ++k) fresh[k].num_nodes = online[k].num_nodes;
+  int loops = 0;
+  for (int k = config.retrieval.exclude_recent; k < n; ++k) {
+    const DescribedFrame query = describeFrame(frameNodes(k), config.graph, config.descriptor, false);
+    searchDatabase(query, retrieval::computeRetrievalKey(query.graph, config), detector.database(),
+                   k - config.retrieval.exclude_recent, config, &fresh[k]);
+    ASSERT_EQ(online[k].candidates.size(), static_cast<size_t>(std::min(15, k - 4))) << "frame " << k;
+    loops += online[k].is_loop;
+  }
+  EXPECT_GT(loops, n / 2);  // the copies verify
+  expectIdentical(online, fresh);
 }
 
 TEST(LoopDetector, RejectsAnInvalidConfig) {

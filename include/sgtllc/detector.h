@@ -2,6 +2,7 @@
 /// @brief The online loop detector (one frame at a time) and the pairwise comparison of two frames.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -15,6 +16,9 @@
 #include "sgtllc/verification.h"
 
 namespace sgtllc {
+namespace internal {
+class DescribedCache;
+}  // namespace internal
 
 /// Wall-clock time per stage of one frame or pair (milliseconds, steady clock).
 struct StageTimes {
@@ -67,6 +71,9 @@ class LoopDetector {
  public:
   /// Throws sgtllc::Error if the configuration is invalid.
   explicit LoopDetector(const Config& config = {});
+  ~LoopDetector();
+  LoopDetector(LoopDetector&&) noexcept;
+  LoopDetector& operator=(LoopDetector&&) noexcept;
   /// Resumes a detector over the frames of @p database (e.g. a loaded map, map/map.h): the next frame is numbered
   /// database.size(), and searching proceeds exactly as if those frames had been processed by this detector. The
   /// resumed frames have no registration clouds, so with registration.online their loops keep the SVD pose. Throws
@@ -103,6 +110,8 @@ class LoopDetector {
   NodeExtractor extractor_;
   FrameDatabase database_;
   CloudStore clouds_;
+  /// Descriptions of recently verified frames (src/internal/described_cache.h); never changes a result.
+  std::unique_ptr<internal::DescribedCache> described_;
 };
 
 /// Retrieval, verification and top-1 choice of one query frame (algorithm §5–§7.4) against the frames 0..@p last of
