@@ -132,6 +132,10 @@ void sections(py::module_& m) {
                      "top-1: the closest candidate scoring within this of the best")
       .def_readwrite("lateral_distance", &VerificationConfig::lateral_distance,
                      "a top-1 estimated this far (m) or more is lateral")
+      .def_readwrite("offset_decay_start", &VerificationConfig::offset_decay_start,
+                     "score_t decays linearly for an estimated offset beyond this (m)")
+      .def_readwrite("offset_decay_end", &VerificationConfig::offset_decay_end,
+                     "... to 0 at this offset (m); 0 = no decay")
       .def_readwrite("score_formula", &VerificationConfig::score_formula, "score_t formula")
       .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score_t = score_c, pose from all pairs")
       .def_readwrite("sigma_4", &VerificationConfig::sigma_4, "σ_4: a loop iff the best score_t > σ_4")

@@ -105,6 +105,8 @@ class VerificationConfig:
     seed: int
     select_margin: float
     lateral_distance: float
+    offset_decay_start: float
+    offset_decay_end: float
 class GroundConfig:
     sectors: int
     bin: float

@@ -148,6 +148,14 @@ void Config::validate() const {
   checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
   checkReal("verification.select_margin", v.select_margin, {0.0}, {1.0});
   checkReal("verification.lateral_distance", v.lateral_distance, {0.0, false}, {1000.0});
+  checkReal("verification.offset_decay_start", v.offset_decay_start, {0.0}, {1000.0});
+  checkReal("verification.offset_decay_end", v.offset_decay_end, {0.0}, {1000.0});
+  if (v.offset_decay_end > 0.0 && v.offset_decay_end <= v.offset_decay_start) {
+    throw ConfigError("verification.offset_decay_end",
+                      "verification.offset_decay_end = " + text(v.offset_decay_end) +
+                          " must be 0 (no decay) or greater than verification.offset_decay_start = " +
+                          text(v.offset_decay_start));
+  }
   validateRegistrationConfig(registration);
   validateLabellerConfig(labeller, labels);
   checkInt("threads", threads, 1, kMaxThreads);

@@ -31,6 +31,13 @@ RansacParams ransacParams(const VerificationConfig& config) {
   return p;
 }
 
+double offsetWeight(double offset_m, const VerificationConfig& config) {
+  const double start = config.offset_decay_start, end = config.offset_decay_end;
+  if (end <= 0.0 || offset_m <= start) return 1.0;
+  if (offset_m >= end) return 0.0;
+  return (end - offset_m) / (end - start);
+}
+
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
   const VerificationConfig& vc = config.verification;
   MatchResult result;
@@ -82,6 +89,7 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
     dst_in.push_back(target[k]);
   }
   result.T_match_query = fitRigid(src_in, dst_in);
+  result.score_t *= offsetWeight(result.T_match_query.topRightCorner<3, 1>().norm(), vc);
   return result;
 }
 

@@ -88,6 +88,8 @@ std::vector<Range> ranges() {
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
   r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
   r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
+  r.push_back({"verification.offset_decay_start", {"0", "5"}, {"-1", "1001"}, "[0, 1000]"});
+  r.push_back({"verification.offset_decay_end", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
   const std::string lg = "labeller.ground.", ls = "labeller.segments.";
@@ -206,14 +208,22 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 30 other keys, 18 backend.*, 14 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 30 + 18 + 14 + 26);
+  // 8 classes incl. vehicle, 32 other keys, 18 backend.*, 14 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 32 + 18 + 14 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {
   EXPECT_EQ(errorOf("association:\n  score: count\n  sigma_2: 49\n"), "(no error)");
   EXPECT_THAT(errorOf("association:\n  score: count\n  sigma_2: 49.5\n"),
               HasSubstr("my.yaml:3: association.sigma_2 = 49.5 is out of range [0, 49] (association.score: count)"));
+}
+
+TEST(ConfigRanges, OffsetDecayEndsAfterItStarts) {
+  EXPECT_EQ(errorOf("verification:\n  offset_decay_start: 30\n  offset_decay_end: 0\n"), "(no error)");
+  EXPECT_EQ(errorOf("verification:\n  offset_decay_start: 30\n  offset_decay_end: 30.5\n"), "(no error)");
+  EXPECT_THAT(errorOf("verification:\n  offset_decay_start: 30\n"),
+              HasSubstr("verification.offset_decay_end = 20 must be 0 (no decay) or greater than "
+                        "verification.offset_decay_start = 30"));
 }
 
 TEST(ConfigRanges, DuplicatedKeysNameTheKeyAndBothLines) {

@@ -132,6 +132,43 @@ TEST_F(MatchFrames, Gates) {
   expectRejected(sgtllc::matchFrames(describe(two), match, sgtllc::Config{}), sgtllc::Rejection::kFewAssociations);
 }
 
+TEST(OffsetWeight, LinearBetweenStartAndEnd) {
+  sgtllc::VerificationConfig vc;  // 10 m → 20 m
+  EXPECT_EQ(sgtllc::offsetWeight(0.0, vc), 1.0);
+  EXPECT_EQ(sgtllc::offsetWeight(10.0, vc), 1.0);
+  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(12.5, vc), 0.75);
+  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(19.0, vc), 0.1);
+  EXPECT_EQ(sgtllc::offsetWeight(20.0, vc), 0.0);
+  EXPECT_EQ(sgtllc::offsetWeight(300.0, vc), 0.0);
+  vc.offset_decay_start = 0.0;
+  vc.offset_decay_end = 4.0;
+  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(1.0, vc), 0.75);
+  vc.offset_decay_end = 0.0;  // off, as configs/paper.yaml
+  EXPECT_EQ(sgtllc::offsetWeight(1000.0, vc), 1.0);
+}
+
+TEST_F(MatchFrames, OffsetDecayScalesTheScoreNotThePose) {
+  // The same nodes moved 15 m and 25 m: every node still matches its copy, the pose is right, and score_t is
+  // n_in / N times the weight (1 − (15 − 10) / 10 = 0.5; 0 beyond 20 m).
+  const DescribedFrame query = describe(nodes_);
+  for (const double offset : {15.0, 25.0}) {
+    const Eigen::Matrix4d T = makeT(T_.topLeftCorner<3, 3>(), Eigen::Vector3d(offset * 0.6, -offset * 0.8, 0.0));
+    std::vector<Node> far = nodes_;
+    for (Node& n : far) n.centre = apply(T, n.centre);
+    const DescribedFrame match = describe(far);
+    sgtllc::Config cfg;
+    const auto decayed = sgtllc::matchFrames(query, match, cfg);
+    cfg.verification.offset_decay_end = 0.0;
+    const auto plain = sgtllc::matchFrames(query, match, cfg);
+    ASSERT_EQ(plain.rejection, sgtllc::Rejection::kNone);
+    ASSERT_EQ(decayed.rejection, sgtllc::Rejection::kNone);
+    EXPECT_DOUBLE_EQ(plain.score_t, static_cast<double>(plain.inliers.size()) / match.numNodes());
+    EXPECT_NEAR(decayed.score_t, plain.score_t * (offset < 20.0 ? 0.5 : 0.0), 1e-9);  // the pose's offset, 1e-12 off
+    EXPECT_EQ(decayed.inliers, plain.inliers);
+    EXPECT_LT((decayed.T_match_query - T).cwiseAbs().maxCoeff(), 1e-6);
+  }
+}
+
 TEST(MatchFramesReal, LoopAndNonLoopPairs) {
   // demo_pairs.txt: T_52_4501 from the KITTI ground truth (p_52 = T · p_4501), 2.96 m apart.
   Eigen::Matrix4d T_gt = Eigen::Matrix4d::Identity();

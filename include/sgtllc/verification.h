@@ -38,7 +38,13 @@ struct MatchResult {
 /// RANSAC parameters of the verification config.
 RansacParams ransacParams(const VerificationConfig& config);
 
-/// Associates nodes, applies the score_c gate, runs RANSAC and fits the pose on its inliers.
+/// Weight in [0, 1] of a verified candidate's score_t for its estimated offset ‖t(T_match_query)‖ (m): 1 up to
+/// `config.offset_decay_start`, then linearly down to 0 at `config.offset_decay_end`; always 1 when that is 0.
+/// A pose that puts the query 20 m from the candidate says it is not the same place, however many objects agree.
+double offsetWeight(double offset_m, const VerificationConfig& config);
+
+/// Associates nodes, applies the score_c gate, runs RANSAC, fits the pose on its inliers and scales score_t by
+/// offsetWeight of the pose's translation.
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config);
 
 /// The loop decision for one candidate score: score_t > σ_4 (algorithm §7.4).

@@ -336,6 +336,11 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(number("verification.lateral_distance",
                      "a chosen candidate estimated this far or farther (m) is reported as lateral, not a revisit",
                      [](Config& c) -> double& { return c.verification.lateral_distance; }));
+  f.push_back(number("verification.offset_decay_start",
+                     "score_t is scaled down linearly for an estimated offset beyond this (m) ...",
+                     [](Config& c) -> double& { return c.verification.offset_decay_start; }));
+  f.push_back(number("verification.offset_decay_end", "... to 0 at this offset (m); 0 = no decay",
+                     [](Config& c) -> double& { return c.verification.offset_decay_end; }));
   f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
                                 [](Config& c) -> uint32_t& { return c.verification.seed; }));
   const BackendFieldMakers makers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
