@@ -83,13 +83,15 @@ TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
   std::string line;
   std::getline(rows, line);
   EXPECT_EQ(line.rfind("query,map_frame,localized,score,score_c,lateral,T_mapframe_query_00,", 0), 0u) << line;
+  EXPECT_EQ(line.substr(line.size() - std::string(",T_world_query_23,tracked").size()), ",T_world_query_23,tracked");
   int localized = 0;
   for (size_t q = 0; std::getline(rows, line); ++q) {
     std::vector<std::string> cells;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 30u) << line;
+    ASSERT_EQ(cells.size(), 31u) << line;
     EXPECT_EQ(cells[0], second_.names[q]);
+    EXPECT_EQ(cells[30], "0") << line;  // nothing is tracked without --track
     if (cells[2] != "1") continue;
     ++localized;
     const Eigen::Vector3d t(std::stod(cells[21]), std::stod(cells[25]), std::stod(cells[29]));
@@ -149,7 +151,37 @@ TEST_F(CliMap, EvalWithAMapScoresTheRelocalizationProtocol) {
   const auto tracked_hits = test::run("localize --map " + path("m.sgtmap") + " --nodes " + path("s3/nodes") +
                                       " --config " + path("config.yaml") + " --json --track", false);
   ASSERT_EQ(tracked_hits.status, 0) << tracked_hits.out;
-  EXPECT_EQ(t["reloc_accepted"], nlohmann::json::parse(tracked_hits.out)["localized"]);
+  const nlohmann::json tracked_json = nlohmann::json::parse(tracked_hits.out);
+  EXPECT_EQ(t["reloc_accepted"], tracked_json["localized"]);
+  // hits.csv's last column is the JSON's `tracked`, row by row. This session's answers all score 0.9-1.0, so with
+  // sigma_4 = 0.95 the track (started by the first frame's 1.0) takes the frames between 0.2 and 0.95.
+  std::ofstream(path("track.yaml")) << "retrieval:\n  exclude_recent: 20\nverification:\n  sigma_4: 0.95\n";
+  const std::string track_args = "localize --map " + path("m.sgtmap") + " --nodes " + path("s3/nodes") +
+                                 " --config " + path("track.yaml") + " --track";
+  const auto track_json = test::run(track_args + " --json", false);
+  ASSERT_EQ(track_json.status, 0) << track_json.out;
+  const nlohmann::json track_hits = nlohmann::json::parse(track_json.out)["hits"];
+  ASSERT_EQ(test::run(track_args + " --out " + path("tracked.csv")).status, 0);
+  std::istringstream rows(slurp(path("tracked.csv")));
+  std::string line;
+  std::getline(rows, line);
+  size_t q = 0;
+  int tracked_rows = 0;
+  for (; std::getline(rows, line); ++q) {
+    ASSERT_LT(q, track_hits.size());
+    const nlohmann::json& hit = track_hits[q];
+    const bool row_tracked = line.substr(line.rfind(',') + 1) == "1";
+    EXPECT_EQ(row_tracked, hit["tracked"].get<bool>()) << line;
+    EXPECT_EQ(line.substr(0, line.find(',')), hit["query"].get<std::string>());
+    if (row_tracked) {  // a tracked row is a localized one, scoring between weak_sigma and sigma_4
+      EXPECT_NE(line.find("," + hit["map_frame"].get<std::string>() + ",1,"), std::string::npos) << line;
+      EXPECT_GT(hit["score"].get<double>(), 0.2);
+      EXPECT_LE(hit["score"].get<double>(), 0.95);
+    }
+    tracked_rows += row_tracked;
+  }
+  EXPECT_EQ(q, track_hits.size());
+  EXPECT_GT(tracked_rows, 0);
   EXPECT_EQ(test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --track").status, 2);
 
   const auto report = test::run("eval " + path("s3") + " --nodes " + path("s3/nodes") + " --map " +

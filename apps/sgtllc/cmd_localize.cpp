@@ -40,7 +40,8 @@ void appendPose(std::string& out, const Eigen::Matrix4d& T) {
 }
 
 /// query,map_frame,localized,score,score_c,lateral, 12 entries of T_mapframe_query, 12 of T_world_query (empty
-/// without map poses or candidate): one row per query frame.
+/// without map poses or candidate), tracked (1: accepted below σ_4 because it agrees with the track, `--track`):
+/// one row per query frame. `tracked` is the last column so that the earlier columns keep their places.
 std::string hitsCsv(const std::vector<Hit>& hits) {
   std::string out = "query,map_frame,localized,score,score_c,lateral";
   for (const char* T : {"T_mapframe_query", "T_world_query"}) {
@@ -48,7 +49,7 @@ std::string hitsCsv(const std::vector<Hit>& hits) {
       for (int c = 0; c < 4; ++c) out += "," + std::string(T) + "_" + std::to_string(r) + std::to_string(c);
     }
   }
-  out += '\n';
+  out += ",tracked\n";
   for (const Hit& h : hits) {
     const bool found = !h.map_frame.empty();
     const Candidate* best = found ? &h.r.search.candidates[static_cast<size_t>(h.r.search.best)] : nullptr;
@@ -67,7 +68,7 @@ std::string hitsCsv(const std::vector<Hit>& hits) {
     } else {
       out += std::string(12, ',');
     }
-    out += '\n';
+    out += std::string(",") + (h.r.tracked ? "1" : "0") + "\n";
   }
   return out;
 }
@@ -150,7 +151,7 @@ void addLocalizeCommand(CLI::App& app) {
   cmd->add_option("--nodes", o->nodes, "instead of SEQ_DIR: a folder of node files NAME.txt, frames in name order");
   cmd->add_option("--out", o->out,
                   "write one CSV row per frame: query,map_frame,localized,score,score_c,lateral, T_mapframe_query "
-                  "(3x4), T_world_query (3x4, with map poses)");
+                  "(3x4), T_world_query (3x4, with map poses), tracked (1: accepted by --track below sigma_4)");
   cmd->add_option("--config", o->config, "YAML configuration (its map fields must equal the map's: `sgtllc map info`)");
   addLabellerOption(cmd, &o->labeller);
   cmd->add_option("--labels-dir", o->labels_dir,
