@@ -1,6 +1,7 @@
 // Fine registration (include/sgtllc/registration/): its settings (registration.*) and the Refinement that
 // PairResult and Candidate carry. Adding a field is one line here and one in sgtllc.pyi.
 #include <pybind11/eigen.h>
+#include <pybind11/stl.h>
 
 #include "arrays.h"
 #include "bindings.h"
@@ -23,6 +24,10 @@ void bindRegistration(py::module_& m) {
       .def(py::init<>())
       .def_readwrite("pair", &R::pair, "refine compare_pair's pose (labelled scans only)")
       .def_readwrite("online", &R::online, "refine the online detector's declared loop; keeps a cloud per frame")
+      // A tuple, as ExtraClass.ids: `ground_ids.append(…)` would change a copy; assign a new list instead.
+      .def_property("ground_ids", [](const R& r) { return py::tuple(py::cast(r.ground_ids)); },
+                    [](R& r, std::vector<uint32_t> ids) { r.ground_ids = std::move(ids); },
+                    "raw ids (0..65535) whose points also join the registration: the ground")
       .def_readwrite("voxel", &R::voxel, "voxel leaf of the query points (m)")
       .def_readwrite("max_points", &R::max_points, "most query points kept")
       .def_readwrite("match_voxel", &R::match_voxel, "voxel leaf of the match points (m)")

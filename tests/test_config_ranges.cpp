@@ -119,6 +119,8 @@ std::vector<Range> ranges() {
   for (const char* k : {"min_wall_share", "min_fence_wall_share", "min_scatter_share"}) {
     r.push_back({ls + k, {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
   }
+  r.push_back({"registration.ground_ids", {"[]", "[0, 40, 65535]"}, {"[65536]", "[-1]"},
+               "ids must be integers 0..65535", true});
   r.push_back({"registration.voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
   r.push_back({"registration.max_points", {"100", "1000000"}, {"99", "1000001"}, "[100, 1000000]"});
   r.push_back({"registration.match_voxel", {"0.05", "10"}, {"0", "10.5"}, "[0.05, 10]"});
@@ -208,8 +210,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 32 other keys, 18 backend.*, 14 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 32 + 18 + 14 + 26);
+  // 8 classes incl. vehicle, 32 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 32 + 18 + 15 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "sgtllc/eval/pair_eval.h"
+#include "sgtllc/eval/refinement_stats.h"
 #include "test_support.h"
 
 namespace sgtllc::eval {
@@ -114,6 +115,27 @@ TEST(PairList, ParsesAndRejectsMalformedLines) {
   }
   std::filesystem::remove(path);
   EXPECT_THROW(readPairList(path), Error);
+}
+
+TEST(RefinementStats, CountsEveryStatusTheFallbacksTheTimeAndTheStore) {
+  using S = RefinementStatus;
+  // Six frames: four refined loops (two used, two fallbacks), two frames without a refined loop.
+  const std::vector<std::optional<S>> statuses = {S::kConverged, std::nullopt, S::kMovedTooFar,
+                                                  S::kMaxIterations, std::nullopt, S::kLowFitness};
+  const std::vector<double> ms = {4.0, 1.0, 6.0, 5.0, 2.0, 3.0};
+  const RefinementStats s = refinementStats(true, statuses, ms, 6 * 1000);
+  EXPECT_EQ(s.refined, 4);
+  EXPECT_EQ(s.used, 2);
+  EXPECT_EQ(s.fallbacks(), 2);
+  EXPECT_THAT(s.by_status, ElementsAre(1, 1, 0, 0, 1, 1));
+  EXPECT_DOUBLE_EQ(s.ms_per_frame_mean, 3.5);
+  EXPECT_DOUBLE_EQ(s.ms_per_frame_median, 4.0);  // nearest rank of 1..6 at q = 0.5: index 3 (0.5 · 5 + 0.5)
+  EXPECT_DOUBLE_EQ(s.cloud_bytes_per_frame, 1000.0);
+  EXPECT_EQ(refinementLine(s),
+            "refinement: 4 loops refined, 2 used (converged 1, max_iterations 1); kept the SVD pose 2 "
+            "(too_few_points 0, degenerate 0, low_fitness 1, moved_too_far 1); 4.00 ms per frame median (mean 3.50); "
+            "cloud store 1000 bytes per frame\n");
+  EXPECT_EQ(refinementLine(refinementStats(false, {}, {}, 0)), "refinement: off (registration.online: false)\n");
 }
 
 }  // namespace

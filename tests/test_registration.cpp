@@ -8,6 +8,7 @@
 #include "sgtllc/detector.h"
 #include "sgtllc/registration/icp.h"
 #include "sgtllc/registration/registration_cloud.h"
+#include "sgtllc/clustering.h"
 #include "test_support.h"
 
 namespace sgtllc {
@@ -44,8 +45,11 @@ LabeledCloud *Registration::s52, *Registration::s4501;
 TEST_F(Registration, RecoversAKnownPoseFromAPerturbedSeed) {
   // The query is the match's own points moved by T⁻¹, so T_match_query = T exactly; the seed is 10 cm and 0.5°
   // off, about twice the object-level SVD error on the simulated loops.
-  const std::vector<Eigen::Vector3f> match = points(*s52);
-  ASSERT_EQ(match.size(), 3589u);  // 0.5 m voxels of the stable classes, below max_points = 4000
+  RegistrationConfig stable;
+  stable.ground_ids.clear();
+  stable.voxel = 0.5;
+  const std::vector<Eigen::Vector3f> match = points(*s52, stable);
+  ASSERT_EQ(match.size(), 3589u);  // 0.5 m voxels of the stable classes, below max_points = 8000
   const Eigen::Matrix4d T = test::rigid(20.0, 1.0, -0.5, Eigen::Vector3d(3.0, -1.5, 0.2));
   const Eigen::Matrix4d seed = T * test::rigid(0.5, 0.2, -0.2, Eigen::Vector3d(0.06, -0.07, 0.04));
   const Refinement r = refinePose(moved(match, T.inverse()), match, seed, RegistrationConfig{});
@@ -76,7 +80,8 @@ TEST_F(Registration, RealRevisitAgreesWithTheIcpReference) {
   ASSERT_TRUE(r.is_loop);
   ASSERT_TRUE(r.refinement.has_value());
   EXPECT_TRUE(r.refinement->used()) << refinementStatusName(r.refinement->status);
-  EXPECT_GT(r.refinement->fitness, 0.8);
+  // Fitness counts the query points paired within max_correspondence (0.3 m): 0.76 here (0.91 within 1 m).
+  EXPECT_GT(r.refinement->fitness, 0.7);
   EXPECT_LT(r.refinement->rmse_m, 0.1);
   // Acceptance (issue 13): within 1.5 cm and 0.05° of the ICP-refined reference (data/README.md); the SVD pose
   // it started from is 2.2 cm / 0.09° away.
@@ -165,6 +170,8 @@ TEST(RegistrationCloud, CompactCloudKeepsCentimetresInSixBytesAPoint) {
 
 TEST_F(Registration, StablePointsOnlyVoxelisedAndCapped) {
   RegistrationConfig config;
+  config.ground_ids.clear();
+  config.voxel = 0.5;
   config.max_points = 1000000;
   const std::vector<Eigen::Vector3f> all = points(*s52, config);
   config.max_points = 500;
@@ -176,7 +183,43 @@ TEST_F(Registration, StablePointsOnlyVoxelisedAndCapped) {
   EXPECT_TRUE(capped[499] == all[499 * 3589 / 500]);
   LabeledCloud roads = *s52;
   std::fill(roads.labels.begin(), roads.labels.end(), 40u);
-  EXPECT_TRUE(points(roads).empty());
+  EXPECT_TRUE(points(roads, config).empty());
+  // With the default ground ids, road (40) joins: every finite point of the scan, voxelised.
+  RegistrationConfig ground;
+  ground.max_points = 1000000;
+  std::vector<Eigen::Vector3f> finite;
+  for (const Eigen::Vector3f& p : roads.points) {
+    if (p.allFinite()) finite.push_back(p);
+  }
+  EXPECT_EQ(points(roads, ground).size(), voxelDownsample(finite, ground.voxel).centroids.size());
+  roads.labels.back() = 40u | (7u << 16);  // an instance id in the high half does not matter
+  EXPECT_EQ(points(roads, ground).size(), voxelDownsample(finite, ground.voxel).centroids.size());
+}
+
+TEST(RegistrationGeometry, TheGroundFixesTheHeightThatWallsLeaveFree) {
+  // Two walls (building, 50) and a floor (road, 40): without the ground ids the walls leave z free (degenerate);
+  // with them a 5 cm height error of the seed is corrected exactly.
+  const Eigen::Vector3f x = Eigen::Vector3f::UnitX(), y = Eigen::Vector3f::UnitY(), z = Eigen::Vector3f::UnitZ();
+  LabeledCloud scene;
+  for (const auto& p : patch({0.1f, 0.1f, 0}, x, y, 40)) scene.points.push_back(p), scene.labels.push_back(40);
+  for (const auto& p : patch({10, 0.5f, 0.5f}, y, z, 30)) scene.points.push_back(p), scene.labels.push_back(50);
+  for (const auto& p : patch({0.5f, 10, 0.5f}, x, z, 30)) scene.points.push_back(p), scene.labels.push_back(50);
+  RegistrationConfig config;
+  config.voxel = config.match_voxel = 0.1;  // finer than the 0.2 m grid: every point is its own voxel
+  const LabelMap labels{LabelConfig{}};
+  const Eigen::Matrix4d seed = test::rigid(0, 0, 0, {0.0, 0.0, 0.05});
+  const auto with = [&](const RegistrationConfig& c) {
+    return refinePose(queryPoints(scene, labels, c), matchPoints(scene, labels, c), seed, c);
+  };
+  const Refinement ground = with(config);
+  ASSERT_TRUE(ground.used()) << refinementStatusName(ground.status);
+  EXPECT_EQ(ground.query_points, 40 * 40 + 2 * 30 * 30);
+  EXPECT_LT(poseError(ground.T_match_query, Eigen::Matrix4d::Identity()).translation_m, 1e-5);
+  config.ground_ids.clear();
+  const Refinement walls = with(config);
+  EXPECT_EQ(walls.query_points, 2 * 30 * 30);
+  EXPECT_EQ(walls.status, RefinementStatus::kDegenerate);
+  EXPECT_TRUE(walls.T_match_query == seed);
 }
 
 /// 52, 88, G empty frames, 850, 4501 through the online detector with refinement on.
@@ -193,7 +236,7 @@ std::vector<FrameResult> onlineRun(const std::vector<const LabeledCloud*>& scans
     }
   }
   EXPECT_EQ(detector.clouds().size(), online ? detector.numFrames() : 0);
-  EXPECT_LE(detector.clouds().bytes(), online ? 6u * 20000u * scans.size() : 0u);
+  EXPECT_LE(detector.clouds().bytes(), online ? 6u * 10000u * scans.size() : 0u);
   return out;
 }
 

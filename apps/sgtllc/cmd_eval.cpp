@@ -269,6 +269,7 @@ void runEval(const EvalCliOptions& o) {
               << m.loops_false_pose_correct << "); " << poseLine(m.poses) << "\n"
               << "ms per frame: median " << fixed(m.ms_per_frame_median, 2) << ", p99 " << fixed(m.ms_per_frame_p99, 2)
               << "; database " << fixed(m.db_bytes_per_frame, 0) << " bytes per frame\n"
+              << (m.refinement.enabled ? eval::refinementLine(m.refinement) : std::string())
               << eval::undefinedText(eval::undefinedMetrics(m));
     if (folder_pairs.active()) std::cout << "pair list " << folder_pairs.path << ":\n" << pairListSummary(folder_pairs.metrics);
     if (back.odometry) std::cout << back.summary << comparisonText(back.comparison);

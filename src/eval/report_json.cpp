@@ -29,6 +29,22 @@ Json top1Json(const SequenceMetrics& m) {
   return j;
 }
 
+/// The online refinement's statuses, time and store; null when registration.online was off.
+Json refinementJson(const RefinementStats& r) {
+  if (!r.enabled) return nullptr;
+  Json by_status = Json::object();
+  for (int k = 0; k < kRefinementStatuses; ++k) {
+    by_status[refinementStatusName(static_cast<RefinementStatus>(k))] = r.by_status[static_cast<size_t>(k)];
+  }
+  return {{"refined", r.refined},
+          {"used", r.used},
+          {"fallbacks", r.fallbacks()},
+          {"by_status", by_status},
+          {"ms_per_frame_median", r.ms_per_frame_median},
+          {"ms_per_frame_mean", r.ms_per_frame_mean},
+          {"cloud_bytes_per_frame", r.cloud_bytes_per_frame}};
+}
+
 }  // namespace
 
 Json sequenceMetricsJson(const SequenceMetrics& m) {
@@ -62,6 +78,7 @@ Json sequenceMetricsJson(const SequenceMetrics& m) {
             {"pose_correct", m.loops_pose_correct},
             {"false_pose_correct", m.loops_false_pose_correct}}},
           {"poses", poseJson(m.poses)},
+          {"refinement", refinementJson(m.refinement)},
           {"top1", top1Json(m)},
           {"top1_no_lateral", curveJson(m.top1_no_lateral)},
           {"top1_score_only", curveJson(m.top1_score_only)},

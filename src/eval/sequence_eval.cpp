@@ -52,11 +52,14 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
       const long m = numbers[static_cast<size_t>(loop->frame)];
       rec.pose_error = poseError(rec.T_match_query, truth.relative(m, rec.frame));
       rec.pose_evaluated = truth.distance(rec.frame, m) <= options.pose_max_distance;
+      if (loop->refinement) rec.refinement = loop->refinement->status;
     }
     run.frames.push_back(std::move(rec));
     if (options.on_frame) options.on_frame(i, r, detector);
     if (options.progress) options.progress(i + 1, source.size(), loops);
   });
+  run.refinement_online = config.registration.online;
+  run.cloud_bytes = detector.clouds().bytes();
   return run;
 }
 
@@ -146,6 +149,13 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
   out.poses = summarisePoses(errors, options.success_translation, options.success_rotation);
   out.ms_per_frame_median = percentile(frame_ms, 0.5);
   out.ms_per_frame_p99 = percentile(frame_ms, 0.99);
+  std::vector<std::optional<RefinementStatus>> statuses;
+  std::vector<double> refinement_ms;
+  for (const FrameRecord& f : run.frames) {
+    statuses.push_back(f.refinement);
+    refinement_ms.push_back(f.timing.refinement_ms);
+  }
+  out.refinement = refinementStats(run.refinement_online, statuses, refinement_ms, run.cloud_bytes);
   out.db_bytes_per_frame = run.frames.empty() ? 0.0
                                               : static_cast<double>(run.frames.back().db_bytes) / run.frames.size();
   return out;

@@ -136,6 +136,31 @@ Field customMap() {
       }};
 }
 
+/// A list of raw label ids, e.g. [10, 252]; returns an error text ("" on success).
+std::string readIds(const YAML::Node& n, std::vector<uint32_t>* out) {
+  if (!n.IsSequence()) return "expected a list of raw ids, e.g. [10, 252]";
+  out->clear();
+  for (const auto& id : n) {
+    long long v = 0;
+    if (!parseInt(scalarText(id), 0, 0xFFFF, &v)) return "ids must be integers 0..65535";
+    out->push_back(static_cast<uint32_t>(v));
+  }
+  return "";
+}
+
+std::string idsText(const std::vector<uint32_t>& ids) {
+  std::string s = "[";
+  for (size_t k = 0; k < ids.size(); ++k) s += (k ? ", " : "") + std::to_string(ids[k]);
+  return s + "]";
+}
+
+/// A field holding a list of raw label ids (registration.ground_ids).
+Field idList(std::string key, std::string comment, std::function<std::vector<uint32_t>&(Config&)> ref) {
+  return Field{std::move(key), std::move(comment),
+               [ref](const Config& c) { return idsText(ref(const_cast<Config&>(c))); },
+               [ref](Config& c, const YAML::Node& n) -> std::string { return readIds(n, &ref(c)); }};
+}
+
 /// One entry of labels.extra_classes, `{name: NAME, ids: [ID, …]}`; returns an error text ("" on success).
 std::string readExtraClass(const YAML::Node& n, ExtraClass* out) {
   if (!n.IsMap()) return "expected a map {name: NAME, ids: [ID, ...]}";
@@ -148,11 +173,8 @@ std::string readExtraClass(const YAML::Node& n, ExtraClass* out) {
       has_name = true;
     } else if (key == "ids") {
       if (!kv.second.IsSequence()) return "ids: expected a list of raw ids, e.g. [10, 252]";
-      for (const auto& id : kv.second) {
-        long long v = 0;
-        if (!parseInt(scalarText(id), 0, 0xFFFF, &v)) return "ids must be integers 0..65535";
-        out->ids.push_back(static_cast<uint32_t>(v));
-      }
+      const std::string err = readIds(kv.second, &out->ids);
+      if (!err.empty()) return err;
     } else {
       return "unknown key '" + key + "' (expected name and ids)";
     }
@@ -168,9 +190,7 @@ Field extraClasses() {
       [](const Config& c) {
         std::string s = "[";
         for (const ExtraClass& e : c.labels.extra_classes) {
-          s += (s.size() > 1 ? ", " : "") + std::string("{name: ") + e.name + ", ids: [";
-          for (size_t k = 0; k < e.ids.size(); ++k) s += (k ? ", " : "") + std::to_string(e.ids[k]);
-          s += "]}";
+          s += (s.size() > 1 ? ", " : "") + std::string("{name: ") + e.name + ", ids: " + idsText(e.ids) + "}";
         }
         return s + "]";
       },
@@ -229,10 +249,12 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                                   "per-point classes from the label files or from the scan's geometry (docs/labeller.md)",
                                   [](Config& c) -> LabelSource& { return c.labeller.source; },
                                   {{"file", LabelSource::kFile}, {"geometric", LabelSource::kGeometric}}));
-  addLabellerFields(BackendFieldMakers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
-                                       [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
-                                       [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
-                                       [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); }});
+  const BackendFieldMakers makers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
+                                  [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
+                                  [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
+                                  [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); },
+                                  [&f](auto k, auto c, auto r) { f.push_back(idList(k, c, r)); }};
+  addLabellerFields(makers);
   for (int k = 0; k < labels.numClasses(); ++k) {
     const std::string p = "cluster." + labels.className(k) + ".";
     f.push_back(number(p + "voxel", "voxel leaf (m); 0 = no downsampling",
@@ -343,10 +365,6 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                      [](Config& c) -> double& { return c.verification.offset_decay_end; }));
   f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
                                 [](Config& c) -> uint32_t& { return c.verification.seed; }));
-  const BackendFieldMakers makers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
-                                  [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
-                                  [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },
-                                  [&f](auto k, auto c, auto r) { f.push_back(boolean(k, c, r)); }};
   addRegistrationFields(makers);
   f.push_back(integer<int>("threads", "worker threads for candidate verification; results do not depend on it",
                       [](Config& c) -> int& { return c.threads; }));

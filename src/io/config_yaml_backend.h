@@ -2,6 +2,7 @@
 // one place. config_fields.cpp owns the field machinery and passes it in as the makers below.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <utility>
@@ -19,6 +20,8 @@ struct BackendFieldMakers {
                      std::vector<std::pair<std::string, backend::RobustLoss>>)>
       loss;
   std::function<void(std::string, std::string, std::function<bool&(Config&)>)> boolean;
+  /// A list of raw label ids, e.g. [40, 48] (registration.ground_ids).
+  std::function<void(std::string, std::string, std::function<std::vector<uint32_t>&(Config&)>)> ids;
 };
 
 /// Adds every field of backend::BackendConfig, in struct order, with keys mirroring the struct.

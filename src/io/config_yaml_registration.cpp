@@ -18,7 +18,9 @@ void addRegistrationFields(const BackendFieldMakers& add) {
   boolean("pair", "refine the pose of `sgtllc pair` by point-to-plane ICP", [](R& r) -> bool& { return r.pair; });
   boolean("online", "refine each declared loop online (keeps <= 6 * match_max_points bytes per frame)",
           [](R& r) -> bool& { return r.online; });
-  number("voxel", "voxel leaf of the stable-class points before ICP (m)", [](R& r) -> double& { return r.voxel; });
+  add.ids("registration.ground_ids", "raw ids whose points also join the ICP clouds (not the graph): the ground",
+          [](Config& c) -> std::vector<uint32_t>& { return c.registration.ground_ids; });
+  number("voxel", "voxel leaf of the query points before ICP (m)", [](R& r) -> double& { return r.voxel; });
   integer("max_points", "most query points after downsampling", [](R& r) -> int& { return r.max_points; });
   number("match_voxel", "voxel leaf of the match scan's stable-class points (m)",
          [](R& r) -> double& { return r.match_voxel; });

@@ -8,17 +8,22 @@
 
 namespace sgtllc {
 
-std::vector<Eigen::Vector3f> registrationPoints(const LabeledCloud& cloud, const LabelMap& labels, double voxel,
+std::vector<Eigen::Vector3f> registrationPoints(const LabeledCloud& cloud, const LabelMap& labels,
+                                                const std::vector<uint32_t>& ground_ids, double voxel,
                                                 int max_points) {
   if (cloud.points.size() != cloud.labels.size()) {
     throw Error("registration: " + std::to_string(cloud.points.size()) + " points but " +
                 std::to_string(cloud.labels.size()) + " labels");
   }
+  // One lookup per point: the class table of the labels plus the ground ids (low 16 bits, as LabelMap).
+  std::vector<uint8_t> use(1u << 16, 0);
+  for (uint32_t id = 0; id < use.size(); ++id) use[id] = labels.classOf(id) >= 0;
+  for (uint32_t id : ground_ids) use[id & 0xFFFFu] = 1;
   std::vector<Eigen::Vector3f> stable;
   stable.reserve(cloud.points.size());
   for (size_t i = 0; i < cloud.points.size(); ++i) {
     const Eigen::Vector3f& p = cloud.points[i];
-    if (labels.classOf(cloud.labels[i]) < 0 || !p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxCoordinate) continue;
+    if (!use[cloud.labels[i] & 0xFFFFu] || !p.allFinite() || p.cwiseAbs().maxCoeff() > kMaxCoordinate) continue;
     stable.push_back(p);
   }
   std::vector<Eigen::Vector3f> voxels = voxelDownsample(stable, voxel).centroids;

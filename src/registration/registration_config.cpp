@@ -9,6 +9,12 @@ namespace sgtllc {
 using namespace detail;
 
 void validateRegistrationConfig(const RegistrationConfig& r) {
+  for (uint32_t id : r.ground_ids) {
+    if (id > 0xFFFFu) {
+      throw ConfigError("registration.ground_ids",
+                        "registration.ground_ids: " + std::to_string(id) + " is not a raw id 0..65535");
+    }
+  }
   checkReal("registration.voxel", r.voxel, {0.05}, {10.0});
   checkInt("registration.max_points", r.max_points, 100, 1000000);
   checkReal("registration.match_voxel", r.match_voxel, {0.05}, {10.0});

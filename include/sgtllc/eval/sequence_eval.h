@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "sgtllc/eval/frame_source.h"
 #include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/metrics.h"
+#include "sgtllc/eval/refinement_stats.h"
 
 namespace sgtllc::eval {
 
@@ -59,12 +61,16 @@ struct FrameRecord {
   StageTimes timing;
   double load_ms = 0.0;
   size_t db_bytes = 0;        ///< database size after this frame
+  /// How the online refinement of the loop's pose ended (registration.online); nullopt if it was not refined.
+  std::optional<RefinementStatus> refinement;
 };
 
 struct SequenceRun {
   std::vector<FrameRecord> frames;
   std::vector<Eigen::Vector3d> positions;  ///< ground-truth LiDAR position of each frame
   bool contiguous = true;  ///< frame numbers are 0, 1, 2, …; otherwise the exclusion gap counts processed frames
+  bool refinement_online = false;  ///< registration.online was on
+  size_t cloud_bytes = 0;  ///< the detector's registration cloud store at the end (CloudStore::bytes)
 };
 
 /// Streams @p source through a LoopDetector(@p config) and records every query against @p truth. Throws
@@ -126,6 +132,7 @@ struct SequenceMetrics {
   double ms_per_frame_median = 0.0;    ///< extraction + description + retrieval + verification (reading excluded)
   double ms_per_frame_p99 = 0.0;
   double db_bytes_per_frame = 0.0;     ///< final database size / frames
+  RefinementStats refinement;          ///< the online refinement's statuses, time and store (registration.online)
 };
 
 SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions& options);

@@ -16,21 +16,23 @@
 
 namespace sgtllc {
 
-/// The stable-class points of @p cloud (LabelMap::classOf ≥ 0, finite, within ±kMaxCoordinate), one centroid per
-/// voxel of edge @p voxel (m) in order of first appearance, then at most @p max_points of them by an even stride.
-/// Throws sgtllc::Error if points and labels differ in length.
-std::vector<Eigen::Vector3f> registrationPoints(const LabeledCloud& cloud, const LabelMap& labels, double voxel,
+/// The points of @p cloud registration uses: a stable class (LabelMap::classOf ≥ 0) or one of @p ground_ids
+/// (RegistrationConfig::ground_ids), finite, within ±kMaxCoordinate; one centroid per voxel of edge @p voxel (m) in
+/// order of first appearance, then at most @p max_points of them by an even stride. Throws sgtllc::Error if points
+/// and labels differ in length.
+std::vector<Eigen::Vector3f> registrationPoints(const LabeledCloud& cloud, const LabelMap& labels,
+                                                const std::vector<uint32_t>& ground_ids, double voxel,
                                                 int max_points);
 
-/// The query (source) cloud of a refinement: RegistrationConfig::voxel and max_points.
+/// The query (source) cloud of a refinement: RegistrationConfig::ground_ids, voxel and max_points.
 inline std::vector<Eigen::Vector3f> queryPoints(const LabeledCloud& cloud, const LabelMap& labels,
                                                 const RegistrationConfig& config) {
-  return registrationPoints(cloud, labels, config.voxel, config.max_points);
+  return registrationPoints(cloud, labels, config.ground_ids, config.voxel, config.max_points);
 }
 /// The match (target) cloud: the finer RegistrationConfig::match_voxel and match_max_points; the one stored online.
 inline std::vector<Eigen::Vector3f> matchPoints(const LabeledCloud& cloud, const LabelMap& labels,
                                                 const RegistrationConfig& config) {
-  return registrationPoints(cloud, labels, config.match_voxel, config.match_max_points);
+  return registrationPoints(cloud, labels, config.ground_ids, config.match_voxel, config.match_max_points);
 }
 
 /// A registration cloud quantised to whole centimetres in int16: 6 bytes per point, ±327.67 m.
