@@ -156,6 +156,7 @@ class RegistrationConfig:
     max_rotation_change_deg: float
     information_sigma_min: float
     information_scale: float
+    ground_ids: Tuple[int, ...]
 class OdometryNoise:
     translation_sigma_per_m: float
     translation_sigma_min: float

@@ -249,7 +249,7 @@ struct VerificationConfig {
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
   /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: issue 13 item 3; tuned on the urban11
   /// and sub7 sequences, see BENCHMARKS.md ("Top-1 choice")]
-  double select_margin = 0.1;
+  double select_margin = 0.15;
   /// A chosen candidate whose estimated offset ‖t(T_match_query)‖ is at least this is reported as lateral
   /// (FrameResult::lateral): a neighbour of the revisit along the old pass, not the revisit itself. It is still a
   /// loop (its pose is a valid constraint), but the top-1 protocol does not claim it as a revisit (m) (0, 1000].
