@@ -232,11 +232,13 @@ TEST_F(Cli, FarTranslationsPrintInFull) {
   const CliRun r = run("pair " + path("a.txt") + " " + path("b.txt"));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_THAT(r.out, HasSubstr("loop: no   score_t 0.000"));
+  EXPECT_THAT(r.out, HasSubstr("score_t scaled by 0.000 for the estimated offset 20000.00 m"));
   EXPECT_THAT(r.out, HasSubstr("-20000.000000 ]"));
   std::ofstream(path("no-decay.yaml")) << "verification:\n  offset_decay_end: 0\n";
   const CliRun plain = run("pair " + path("a.txt") + " " + path("b.txt") + " --config " + path("no-decay.yaml"));
   ASSERT_EQ(plain.status, 0) << plain.out;
   EXPECT_THAT(plain.out, HasSubstr("loop: YES"));
+  EXPECT_THAT(plain.out, Not(HasSubstr("scaled by")));
   EXPECT_THAT(plain.out, HasSubstr("-20000.000000 ]"));
 }
 

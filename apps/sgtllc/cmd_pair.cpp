@@ -99,6 +99,14 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   std::cout << "associations " << m.associations.size() << ", inliers " << m.inliers.size();
   if (m.rejection != Rejection::kNone) std::cout << "   (rejected: " << rejectionName(m.rejection) << ")";
   std::cout << "\n";
+  const double offset = m.T_match_query.topRightCorner<3, 1>().norm();
+  const double weight = offsetWeight(offset, config.verification);
+  if (m.rejection == Rejection::kNone && weight < 1.0) {
+    // Else a pose 25 m away with 16 inliers would print score_t 0 with no reason (algorithm §7, offset decay).
+    std::cout << "score_t scaled by " << fixed(weight, 3) << " for the estimated offset " << fixed(offset, 2)
+              << " m (verification.offset_decay_start / end " << config.verification.offset_decay_start << " / "
+              << config.verification.offset_decay_end << " m)\n";
+  }
   if (m.rejection == Rejection::kNone) {
     std::cout << "T_match_query (maps query points into the match frame"
               << (r.refinement && r.refinement->used() ? ", refined by ICP" : "") << "):\n"
@@ -154,6 +162,8 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                               {"score_t", m.score_t},
                               {"score_c", m.score_c},
                               {"rejection", rejectionName(m.rejection)},
+                              {"offset_weight", offsetWeight(m.T_match_query.topRightCorner<3, 1>().norm(),
+                                                             config.verification)},
                               {"nodes_query", r.query_nodes.size()},
                               {"nodes_match", r.match_nodes.size()},
                               {"associations", m.associations.size()},
