@@ -90,6 +90,8 @@ void bindMap(py::module_& m) {
       .def_readonly("score", &map::Relocalization::score, "score_t of the best candidate (0 if none)")
       .def_readonly("tracked", &map::Relocalization::tracked,
                     "accepted by a RelocalizationTracker's agreement with the track, not by sigma_4")
+      .def_readonly("weak_rotation", &map::Relocalization::weak_rotation,
+                    "the inlier centres lie nearly on a line, so the rotation is not fixed: not localized")
       .def_property_readonly("T_mapframe_query",
                              [](const map::Relocalization& r) { return matrixToArray(r.T_mapframe_query); },
                              "(4, 4): p_mapframe = T_mapframe_query @ p_query")

@@ -327,6 +327,7 @@ class Relocalization:
     T_mapframe_query: np.ndarray
     T_world_query: Optional[np.ndarray]
     tracked: bool
+    weak_rotation: bool
 class Relocalizer:
     def __init__(self, map: Map, config: Config = ..., num_candidates: int = 50) -> None: ...
     def localize(self, points: ArrayLike, labels: ArrayLike, drop_nonfinite: bool = False) -> Relocalization: ...

@@ -24,6 +24,14 @@ map::Map circleMap(bool poses = true) {
   return map::makeMap(detector.database(), config, s.names, poses ? s.poses : std::vector<Eigen::Matrix4d>{});
 }
 
+/// The hand-built answers below carry no inlier nodes, so the rotation check is off for them (it has its own test,
+/// Relocalizer.RefusesAnAnswerWhoseInliersLieNearlyOnALine).
+map::RelocalizerOptions handBuilt() {
+  map::RelocalizerOptions options;
+  options.max_rotation_uncertainty_deg = 0.0;
+  return options;
+}
+
 /// A verified candidate: map frame @p frame, score_t @p score, the query @p dx m ahead of the frame (its x axis).
 Candidate candidate(int frame, double score, double dx = 0.0, Rejection rejection = Rejection::kNone) {
   Candidate c;
@@ -54,7 +62,7 @@ map::Relocalization answer(const map::Relocalizer& r, std::vector<Candidate> can
 
 TEST(RelocalizationTracker, AcceptsAWeakerAnswerOnlyWhereTheTrackIs) {
   // Map frames lie 3.77 m apart on a circle of radius 60 m (100 per lap).
-  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig());
+  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig(), "m", handBuilt());
   map::RelocalizationTracker tracker(relocalizer);  // weak 0.2, gate 3 m + 2 m per frame, window 10
 
   // Before any accepted answer there is no track: a weak answer stays unaccepted.
@@ -86,7 +94,7 @@ TEST(RelocalizationTracker, AcceptsAWeakerAnswerOnlyWhereTheTrackIs) {
 }
 
 TEST(RelocalizationTracker, LosesTheTrackAfterTheWindow) {
-  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig());
+  const map::Relocalizer relocalizer(circleMap(), trackerTestConfig(), "m", handBuilt());
   map::TrackingOptions options;
   options.window = 3;
   options.max_speed_m_per_frame = 10.0;
@@ -105,7 +113,7 @@ TEST(RelocalizationTracker, LosesTheTrackAfterTheWindow) {
 }
 
 TEST(RelocalizationTracker, TracksNothingWithoutMapPosesAndRefusesBadOptions) {
-  const map::Relocalizer relocalizer(circleMap(/*poses=*/false), trackerTestConfig());
+  const map::Relocalizer relocalizer(circleMap(/*poses=*/false), trackerTestConfig(), "m", handBuilt());
   map::RelocalizationTracker tracker(relocalizer);
   EXPECT_TRUE(tracker.track(answer(relocalizer, {candidate(10, 0.5)})).localized);
   EXPECT_FALSE(tracker.track(answer(relocalizer, {candidate(10, 0.25)})).localized);
@@ -130,6 +138,61 @@ TEST(Relocalizer, VerifiesItsOwnShortlist) {
   EXPECT_EQ(own.localize(second.frames[0]).search.candidates.size(), 15u);
   EXPECT_EQ(narrow.localize(second.frames[0]).search.candidates.size(), 4u);
   EXPECT_THROW(map::Relocalizer(circleMap(), config, "m", map::RelocalizerOptions{1001}), Error);
+}
+
+/// Eight nodes along x (−7 … 7 m) at y = ±@p a, signs chosen so that Σx·y = 0: the centred centres' singular
+/// values are exactly √Σx² = 12.96 m and a·√8.
+std::vector<Node> strip(double a) {
+  const double x[] = {-7, -5, -3, -1, 1, 3, 5, 7};
+  const double sign[] = {1, -1, -1, 1, 1, -1, -1, 1};
+  std::vector<Node> nodes;
+  for (int k = 0; k < 8; ++k) nodes.push_back(Node{Eigen::Vector3d(x[k], a * sign[k], 0.0), k % 3});
+  return nodes;
+}
+
+/// Map frame @p frame verified with every node an inlier (node k of the query to node k of the frame).
+Candidate allInliers(int frame, int nodes, double score) {
+  Candidate c = candidate(frame, score);
+  for (int k = 0; k < nodes; ++k) {
+    c.match.associations.push_back(NodeMatch{k, k, 1.0});
+    c.match.inliers.push_back(k);
+  }
+  return c;
+}
+
+TEST(Relocalizer, RefusesAnAnswerWhoseInliersLieNearlyOnALine) {
+  // The bound is s₂ ≥ inlier_threshold / tan 5° = 0.4 / 0.08749 = 4.572 m: a = 1.5 gives s₂ = 4.243 m, a = 1.7
+  // 4.808 m.
+  test::NodeSequence s;
+  for (double a : {1.5, 1.7}) {
+    s.frames.push_back(strip(a));
+    s.poses.push_back(Eigen::Matrix4d::Identity());
+    s.names.push_back(std::to_string(s.names.size()));
+  }
+  const Config config = trackerTestConfig();
+  const LoopDetector detector = test::runNodes(s, config);
+  const map::Relocalizer relocalizer(map::makeMap(detector.database(), config, s.names, s.poses), config);
+  ASSERT_EQ(relocalizer.map().database.nodes(0).size(), 8u);
+  EXPECT_FALSE(relocalizer.rotationSupported(allInliers(0, 8, 0.9)));
+  EXPECT_TRUE(relocalizer.rotationSupported(allInliers(1, 8, 0.9)));
+  EXPECT_FALSE(relocalizer.rotationSupported(allInliers(1, 2, 0.9)));  // two inliers fix no rotation
+
+  const map::Relocalization thin = answer(relocalizer, {allInliers(0, 8, 0.9)});
+  EXPECT_TRUE(thin.search.is_loop);
+  EXPECT_FALSE(thin.localized);
+  EXPECT_TRUE(thin.weak_rotation);
+  const map::Relocalization wide = answer(relocalizer, {allInliers(1, 8, 0.9)});
+  EXPECT_TRUE(wide.localized);
+  EXPECT_FALSE(wide.weak_rotation);
+  // The check off: the thin strip is accepted; a bound out of range is refused.
+  map::RelocalizerOptions off;
+  off.max_rotation_uncertainty_deg = 0.0;
+  const map::Relocalizer unchecked(map::makeMap(detector.database(), config, s.names, s.poses), config, "m", off);
+  EXPECT_TRUE(answer(unchecked, {allInliers(0, 8, 0.9)}).localized);
+  map::RelocalizerOptions bad;
+  bad.max_rotation_uncertainty_deg = 90.0;
+  EXPECT_THROW(map::Relocalizer(map::makeMap(detector.database(), config, s.names, s.poses), config, "m", bad),
+               Error);
 }
 
 TEST(RelocalizationTracker, AStreamOfTheSecondSessionAgreesWithItsTruth) {

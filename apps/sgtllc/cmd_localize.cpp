@@ -82,8 +82,10 @@ std::string hitLine(const Hit& h) {
     const Eigen::Vector3d w = h.r.T_world_query->topRightCorner<3, 1>();
     line += "  map position (" + fixed(w.x(), 2) + ", " + fixed(w.y(), 2) + ", " + fixed(w.z(), 2) + ") m";
   }
-  return line + (h.r.tracked ? "  (below verification.sigma_4, agrees with the track)"
-                 : h.r.localized ? "" : "  (below verification.sigma_4: not localized)");
+  return line + (h.r.tracked         ? "  (below verification.sigma_4, agrees with the track)"
+                 : h.r.localized     ? ""
+                 : h.r.weak_rotation ? "  (inlier centres nearly on a line, rotation not fixed: not localized)"
+                                     : "  (below verification.sigma_4: not localized)");
 }
 
 void localizeCommand(const LocalizeOptions& o) {
@@ -115,7 +117,8 @@ void localizeCommand(const LocalizeOptions& o) {
     Json list = Json::array();
     for (const Hit& h : hits) {
       Json j = {{"query", h.query}, {"map_frame", h.map_frame.empty() ? Json() : Json(h.map_frame)},
-                {"localized", h.r.localized}, {"tracked", h.r.tracked}, {"score", h.r.score}};
+                {"localized", h.r.localized}, {"tracked", h.r.tracked},
+                {"weak_rotation", h.r.weak_rotation}, {"score", h.r.score}};
       if (!h.map_frame.empty()) j["T_mapframe_query"] = matrixJson(h.r.T_mapframe_query);
       if (h.r.T_world_query) j["T_world_query"] = matrixJson(*h.r.T_world_query);
       list.push_back(std::move(j));

@@ -49,6 +49,7 @@ Relocalization RelocalizationTracker::track(Relocalization answer) {
     for (size_t c = 0; c < candidates.size(); ++c) {
       const MatchResult& m = candidates[c].match;
       if (m.rejection != Rejection::kNone || !(m.score_t > options_.weak_sigma)) continue;
+      if (!relocalizer_.rotationSupported(candidates[c])) continue;
       const Eigen::Matrix4d T_world_query = poses[static_cast<size_t>(candidates[c].frame)] * m.T_match_query;
       if ((T_world_query.topRightCorner<3, 1>() - *last_).norm() > reach) continue;
       // The highest score wins; ties go to the earlier candidate (candidates are in frame order).

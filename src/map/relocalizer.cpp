@@ -1,10 +1,12 @@
 #include "sgtllc/map/relocalizer.h"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include "kdtree_index.h"
 #include "sgtllc/frame.h"
@@ -29,11 +31,24 @@ Config withCandidates(const Config& config, int num_candidates) {
   return c;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+/// The second singular value an answer's centred inlier centres need (RelocalizerOptions).
+double inlierSpreadNeeded(const Config& config, const RelocalizerOptions& options) {
+  const double deg = options.max_rotation_uncertainty_deg;
+  if (!(deg >= 0.0 && deg < 90.0)) {
+    throw Error("relocalizer: max_rotation_uncertainty_deg = " + std::to_string(deg) + " is out of range [0, 90)");
+  }
+  if (deg == 0.0) return 0.0;
+  return config.verification.inlier_threshold / std::tan(deg * kPi / 180.0);
+}
+
 }  // namespace
 
 Relocalizer::Relocalizer(Map map, const Config& config, const std::string& source, RelocalizerOptions options)
     : map_(std::move(map)),
       config_(withCandidates(validated(config), options.num_candidates)),
+      min_inlier_spread_(inlierSpreadNeeded(config_, options)),
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads) {
   checkCompatible(map_, config_, source);
   if (map_.hasPoses()) positions_ = std::make_shared<const PositionIndex>(map_.poses);
@@ -106,7 +121,8 @@ Relocalization Relocalizer::answerWith(FrameResult search, int candidate) const 
   }
   const Candidate& chosen = r.search.candidates[static_cast<size_t>(candidate)];
   r.map_frame = chosen.frame;
-  r.localized = r.search.is_loop;
+  r.weak_rotation = !rotationSupported(chosen);
+  r.localized = r.search.is_loop && !r.weak_rotation;
   r.score = chosen.match.score_t;
   r.T_mapframe_query = chosen.match.T_match_query;
   if (!map_.hasPoses()) return r;
@@ -118,6 +134,27 @@ Relocalization Relocalizer::answerWith(FrameResult search, int candidate) const 
   r.map_frame = nearest;
   r.T_mapframe_query = map_.poses[static_cast<size_t>(nearest)].inverse() * *r.T_world_query;
   return r;
+}
+
+bool Relocalizer::rotationSupported(const Candidate& c) const {
+  if (min_inlier_spread_ <= 0.0) return true;
+  const std::vector<Node>& nodes = map_.database.nodes(c.frame);
+  Eigen::MatrixXd centres(static_cast<Eigen::Index>(c.match.inliers.size()), 3);
+  Eigen::Index row = 0;
+  for (int k : c.match.inliers) {
+    const int node = k >= 0 && static_cast<size_t>(k) < c.match.associations.size()
+                         ? c.match.associations[static_cast<size_t>(k)].match
+                         : -1;
+    if (node < 0 || static_cast<size_t>(node) >= nodes.size()) {
+      throw Error("relocalizer: candidate " + std::to_string(c.frame) + "'s inlier " + std::to_string(k) +
+                  " names no node of the map frame");
+    }
+    centres.row(row++) = nodes[static_cast<size_t>(node)].centre.transpose();
+  }
+  if (centres.rows() < 3) return false;
+  centres.rowwise() -= centres.colwise().mean();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(centres);
+  return svd.singularValues()(1) >= min_inlier_spread_;
 }
 
 }  // namespace sgtllc::map

@@ -38,6 +38,9 @@ struct Relocalization {
   /// Accepted by a RelocalizationTracker's agreement with the track, not by σ_4 (search.is_loop false; search.best
   /// is the candidate that agreed).
   bool tracked = false;
+  /// The chosen candidate verified, but its inlier node centres lie so nearly on a line that the rotation about it
+  /// is not fixed (RelocalizerOptions::max_rotation_uncertainty_deg): not localized, whatever the score.
+  bool weak_rotation = false;
 };
 
 /// Query-time settings of a Relocalizer (docs/relocalization.md, "Relocalizer settings").
@@ -47,6 +50,11 @@ struct RelocalizerOptions {
   /// online detector's 15: on the tuning world (docs/relocalization.md) the true place was outside the top 15 but in
   /// the top 50 for a fifth of the misses, at about three times the verification time [0, 1000].
   int num_candidates = 50;
+  /// An answer is accepted only if its rotation is fixed to within about this (degrees; 0 = no check) [0, 90).
+  /// Inliers fit within ε = verification.inlier_threshold, so the rotation about the line the inlier centres lie
+  /// nearest is uncertain by about ε / s₂, s₂ the second singular value of the centred inlier centres (m): the
+  /// answer needs s₂ ≥ ε / tan(this). 5° is the protocol's pose-success bound (docs/relocalization.md).
+  double max_rotation_uncertainty_deg = 5.0;
 };
 
 /// Queries frames against a map: every map frame is eligible (no recent-frame exclusion, no warm-up) and nothing
@@ -68,6 +76,10 @@ class Relocalizer {
   /// to the estimated position. @p candidate −1: no answer (map_frame −1).
   Relocalization answerWith(FrameResult search, int candidate) const;
 
+  /// Whether candidate @p c's inlier centres (in its map frame's nodes) fix the rotation to within
+  /// RelocalizerOptions::max_rotation_uncertainty_deg; always true when that is 0.
+  bool rotationSupported(const Candidate& c) const;
+
   const Map& map() const { return map_; }
   const Config& config() const { return config_; }
 
@@ -79,6 +91,7 @@ class Relocalizer {
 
   Map map_;
   Config config_;
+  double min_inlier_spread_ = 0.0;  ///< s₂ an answer needs (m), from the options; 0 = no check
   NodeExtractor extractor_;
   std::shared_ptr<const PositionIndex> positions_;  ///< null without map poses
 };
