@@ -1,13 +1,13 @@
 #!/bin/sh
 # Installs the Debian 12 packages sgtllc builds with, if any is missing. Needs root or sudo only when installing.
 #   --dev  also the reliability checks' toolchain (`make test-sanitize`, `make test-tsan`, `make fuzz`): clang with
-#          its sanitizer and libFuzzer runtimes, and LLVM's OpenMP runtime with Archer (TSan-aware OpenMP).
+#          its sanitizer and libFuzzer runtimes.
 set -eu
 PACKAGES="cmake ninja-build g++ xz-utils libeigen3-dev libnanoflann-dev libyaml-cpp-dev liblzf-dev libcli11-dev \
 nlohmann-json3-dev zlib1g-dev libcairo2-dev fonts-dejavu-core libgtest-dev libgmock-dev libbenchmark-dev libceres-dev \
 pybind11-dev python3-dev python3-numpy python3-pytest libfaiss-dev"
 if [ "${1:-}" = "--dev" ]; then
-  PACKAGES="$PACKAGES clang libclang-rt-14-dev libomp-14-dev"
+  PACKAGES="$PACKAGES clang libclang-rt-14-dev"
 fi
 
 missing=""

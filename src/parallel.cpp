@@ -1,18 +1,42 @@
 #include "sgtllc/parallel.h"
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
+#include <vector>
 
 namespace sgtllc {
+namespace {
+
+/// True on a thread that is running items of a parallelFor: a nested call runs in order there, as OpenMP did
+/// with nesting off, so a team never grows past the outer call's thread count.
+thread_local bool in_team = false;
+
+}  // namespace
 
 void parallelFor(int n, int threads, const std::function<void(int)>& f) {
-  if (threads <= 1 || n <= 1) {
+  if (threads <= 1 || n <= 1 || in_team) {
     for (int i = 0; i < n; ++i) f(i);
     return;
   }
-  // Never start more threads than there are items (15 candidates need no larger team).
+  // Never start more threads than there are items (15 candidates need no larger team). The workers are started
+  // per call and end with it: an idle worker never spins. OpenMP's did (libgomp's default wait policy), which took
+  // a third of the CPU of `sgtllc eval` and slowed the frame whenever another process wanted the core
+  // (BENCHMARKS.md "Time per frame"). Items are handed out one at a time, so uneven items balance.
   const int team = std::min(threads, n);
-#pragma omp parallel for num_threads(team) schedule(dynamic, 1)
-  for (int i = 0; i < n; ++i) f(i);
+  std::atomic<int> next{0};
+  auto work = [&]() {
+    in_team = true;
+    for (int i = next.fetch_add(1, std::memory_order_relaxed); i < n; i = next.fetch_add(1, std::memory_order_relaxed)) {
+      f(i);
+    }
+    in_team = false;
+  };
+  std::vector<std::thread> workers;
+  workers.reserve(static_cast<size_t>(team - 1));
+  for (int t = 1; t < team; ++t) workers.emplace_back(work);
+  work();
+  for (std::thread& w : workers) w.join();
 }
 
 }  // namespace sgtllc

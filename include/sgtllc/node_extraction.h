@@ -44,7 +44,7 @@ class NodeExtractor {
   /// Config::graph.max_nodes so that every scan's graph stays within the limit buildGraph enforces. The classes
   /// are those of @p labels (LabelConfig::numClasses()); throws sgtllc::Error unless @p cluster has one
   /// ClassClusterConfig per class. Up to @p threads threads cluster the classes in parallel (Config::threads; the
-  /// nodes do not depend on it; inside another parallel region OpenMP runs them on the calling thread).
+  /// nodes do not depend on it; inside another parallelFor they run on the calling thread).
   NodeExtractor(const ClusterConfig& cluster, const LabelConfig& labels, int max_nodes = GraphConfig{}.max_nodes,
                 int threads = 1);
 

@@ -1,5 +1,5 @@
 /// @file parallel.h
-/// @brief The project's one parallel-for (OpenMP behind a plain function).
+/// @brief The project's one parallel-for (std::thread behind a plain function).
 #pragma once
 
 #include <functional>

@@ -24,11 +24,8 @@ case $mode in
     (cd "$build" && ctest --output-on-failure -j 2) || status=1
     ;;
   tsan)
-    # OpenMP: LLVM's runtime (clang's -fopenmp) with its Archer tool, which tells TSan about OpenMP's barriers and
-    # task switches; the uninstrumented runtime itself is then ignored. libgomp would give false reports.
-    archer=/usr/lib/llvm-$(clang++ -dumpversion | cut -d. -f1)/lib/libarcher.so
-    [ -f "$archer" ] || { echo "check.sh: no $archer (Debian package libomp-14-dev)"; exit 1; }
-    export OMP_TOOL_LIBRARIES="$archer"
+    # The project's threads are std::thread (parallelFor), which TSan sees whole; uninstrumented libraries are
+    # ignored.
     export TSAN_OPTIONS="$common:ignore_noninstrumented_modules=1:second_deadlock_stack=1"
     "$here/tsan-paths.sh" "$build" "$@" || status=1
     ;;
