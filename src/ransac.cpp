@@ -59,6 +59,23 @@ Eigen::Matrix4d kabsch(const std::vector<Eigen::Vector3d>& source, const std::ve
   return T;
 }
 
+/// A rigid motion keeps distances, so two pairs that are both inliers (each within the threshold r of its target)
+/// have source and target distances that differ by less than 2r. A minimal sample (three pairs) that fails this
+/// cannot be all inliers, and its exact fit is then a wrong hypothesis: it is skipped before the SVD. Most
+/// samples of a wrong candidate fail it, which is most of RANSAC's time (BENCHMARKS.md "Time per frame"). A
+/// larger sample is not checked: its least-squares fit can still be right with one outlier in it.
+bool distancesAgree(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
+                    const std::vector<int>& sample, double threshold) {
+  for (size_t a = 0; a < sample.size(); ++a) {
+    for (size_t b = a + 1; b < sample.size(); ++b) {
+      const double ds = (source[sample[a]] - source[sample[b]]).norm();
+      const double dt = (target[sample[a]] - target[sample[b]]).norm();
+      if (std::abs(ds - dt) >= 2.0 * threshold) return false;
+    }
+  }
+  return true;
+}
+
 /// Hypotheses after which a sample of only inliers (of the best hypothesis so far) has been drawn with probability
 /// `confidence`: log(1 − confidence) / log(1 − P(all-inlier sample)). Unlimited for confidence ≥ 1.
 int iterationsNeeded(int inliers, int n, const RansacParams& params) {
@@ -97,8 +114,10 @@ RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::
   std::vector<int> sample, scratch;
   int best_count = 0;
   int needed = params.iterations;
+  const bool check_sample = params.sample_size <= 3;
   for (int it = 0; it < std::min(params.iterations, needed) && best_count < n; ++it) {
     drawSample(rng, n, params, &sample, &scratch);
+    if (check_sample && !distancesAgree(source, target, sample, params.inlier_threshold)) continue;
     const Eigen::Matrix4d T = kabsch(source, target, sample);
     const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
     const Eigen::Vector3d t = T.topRightCorner<3, 1>();

@@ -98,7 +98,8 @@ TEST(AssociateNodes, SameLabelBestMatchTiesAndThreshold) {
       {{kBuilding, a}, {kBuilding, a}, {kPole, a}, {kBuilding, a}, {kVegetation, a}}, /*isolated=*/{1});
   const DescribedFrame match =
       frameOf({{kTrunk, a}, {kBuilding, half}, {kBuilding, a}, {kBuilding, a}, {kPole, quarter}}, {});
-  AssociationConfig cfg;  // σ_2 = 0.3
+  AssociationConfig cfg;
+  cfg.sigma_2 = 0.3;  // the paper's value: q2's 0.25 falls below it
   // q0 → m2 (m0 is identical but a trunk; m2 and m3 tie: lowest j); q1 isolated; q2's best is 0.25 < σ_2; q3 shares
   // m2 with q0; q4 has no vegetation candidate.
   using T3 = std::vector<std::tuple<int, int, double>>;

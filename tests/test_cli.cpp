@@ -109,7 +109,7 @@ TEST_F(Cli, ExportedNodeFilesGiveTheSameResult) {
   std::ifstream ply(path("out/matches.ply"));
   const std::string text(std::istreambuf_iterator<char>(ply), {});
   EXPECT_THAT(text, HasSubstr("element vertex 48\n"));  // 25 match + 23 query nodes
-  EXPECT_THAT(text, HasSubstr("element edge 21\n"));    // one per association
+  EXPECT_THAT(text, HasSubstr("element edge 22\n"));    // one per association
   const CliRun n = run("pair --json " + path("out/query_nodes.txt") + " " + path("out/match_nodes.txt"), false);
   ASSERT_EQ(n.status, 0) << n.out;
   const auto a = nlohmann::json::parse(r.out), b = nlohmann::json::parse(n.out);

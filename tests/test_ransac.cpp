@@ -123,11 +123,12 @@ TEST(Ransac, RecoversTransformAndInlierSet) {
   Points src, dst;
   std::vector<int> truth;
   makeCorrespondences(11, T, &src, &dst, &truth);
-  for (bool with_replacement : {false, true}) {
-    SCOPED_TRACE(with_replacement ? "7 with replacement" : "3 distinct");
+  // 3 with replacement is the default: minimal samples with the distance check before the fit.
+  for (const auto& [with_replacement, size] : {std::pair{false, 3}, std::pair{true, 3}, std::pair{true, 7}}) {
+    SCOPED_TRACE(std::to_string(size) + (with_replacement ? " with replacement" : " distinct"));
     sgtllc::RansacParams params;
     params.with_replacement = with_replacement;
-    params.sample_size = with_replacement ? 7 : 3;
+    params.sample_size = size;
     const auto result = sgtllc::ransacRigid(src, dst, params);
     EXPECT_TRUE(result.accepted);
     EXPECT_EQ(result.inliers, truth);
@@ -186,6 +187,37 @@ TEST(Ransac, AdaptiveStopNeverCutsALowInlierSearchShort) {
     found += a.inliers.size() >= 150;
   }
   EXPECT_GE(found, 35);  // 500 draws find an all-inlier sample with probability 0.98
+}
+
+TEST(Ransac, MinimalSampleCheckSkipsOnlySamplesThatCannotBeAllInliers) {
+  // An equilateral triangle of side 10 m matched to one whose sides are longer by d. The best rigid fit leaves each
+  // vertex d / √3 from its target (analytic). d = 0.5: residual 0.289 m < 0.4 m, so all three are inliers, although
+  // every pair's distances differ by 0.5 m; the check before the fit (skip at 2 × 0.4 m or more) must let that
+  // sample through. d = 0.85: the distances differ by 0.85 ≥ 0.8, the sample is skipped, and rightly: its fit would
+  // leave 0.491 m > 0.4 m.
+  std::mt19937 rng(50);
+  const Eigen::Matrix4d T = makeT(randomRotation(rng), Eigen::Vector3d(4.0, -3.0, 1.0));
+  const auto triangle = [](double side) {
+    const double r = side / std::sqrt(3.0);  // circumradius
+    Points p;
+    for (int k = 0; k < 3; ++k) p.emplace_back(r * std::cos(2.0 * M_PI * k / 3), r * std::sin(2.0 * M_PI * k / 3), 0.0);
+    return p;
+  };
+  const Points src = triangle(10.0);
+  for (const double d : {0.5, 0.85}) {
+    SCOPED_TRACE("sides longer by " + std::to_string(d));
+    Points dst;
+    for (const auto& p : triangle(10.0 + d)) dst.push_back(apply(T, p));
+    const Eigen::Matrix4d fit = sgtllc::fitRigid(src, dst);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR((apply(fit, src[k]) - dst[k]).norm(), d / std::sqrt(3.0), 1e-9);
+    sgtllc::RansacParams params;  // with replacement, 0.4 m
+    params.sample_size = 3;       // as VerificationConfig
+    params.min_inliers = 3;
+    const auto r = sgtllc::ransacRigid(src, dst, params);
+    EXPECT_EQ(r.accepted, d < 0.8);
+    // Samples that repeat a pair fit two points only and are not checked against a third: at most 2 inliers.
+    EXPECT_EQ(r.inliers.size() == 3, d < 0.8);
+  }
 }
 
 }  // namespace
