@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -27,14 +28,16 @@ void parallelFor(int n, int threads, const std::function<void(int)>& f) {
   std::atomic<int> next{0};
   auto work = [&]() {
     in_team = true;
-    for (int i = next.fetch_add(1, std::memory_order_relaxed); i < n; i = next.fetch_add(1, std::memory_order_relaxed)) {
-      f(i);
-    }
+    for (int i; (i = next.fetch_add(1, std::memory_order_relaxed)) < n;) f(i);
     in_team = false;
   };
   std::vector<std::thread> workers;
   workers.reserve(static_cast<size_t>(team - 1));
-  for (int t = 1; t < team; ++t) workers.emplace_back(work);
+  try {
+    for (int t = 1; t < team; ++t) workers.emplace_back(work);
+  } catch (const std::system_error&) {
+    // No thread to be had (a process limit): the workers started so far and this thread do every item.
+  }
   work();
   for (std::thread& w : workers) w.join();
 }

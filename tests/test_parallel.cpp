@@ -1,0 +1,77 @@
+// parallelFor (include/sgtllc/parallel.h): every index exactly once at any thread count, no more threads than
+// asked for, and a nested call run in order on the calling thread.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sgtllc/parallel.h"
+
+namespace {
+
+TEST(ParallelFor, EveryIndexExactlyOnceAtAnyThreadCount) {
+  for (int threads : {1, 2, 3, 8}) {
+    for (int n : {0, 1, 2, 7, 1000}) {
+      std::vector<std::atomic<int>> hits(static_cast<size_t>(n));
+      sgtllc::parallelFor(n, threads, [&](int i) { hits[static_cast<size_t>(i)].fetch_add(1); });
+      for (int i = 0; i < n; ++i) EXPECT_EQ(hits[static_cast<size_t>(i)].load(), 1) << threads << " threads, n " << n;
+    }
+  }
+}
+
+TEST(ParallelFor, AtMostTheThreadsAskedForAndTheCallerAmongThem) {
+  std::mutex m;
+  std::set<std::thread::id> ids;
+  sgtllc::parallelFor(200, 3, [&](int) {
+    std::this_thread::yield();
+    const std::lock_guard<std::mutex> lock(m);
+    ids.insert(std::this_thread::get_id());
+  });
+  EXPECT_LE(ids.size(), 3u);
+  EXPECT_GE(ids.size(), 1u);
+  // One thread: in order, on the caller.
+  std::vector<int> order;
+  const std::thread::id caller = std::this_thread::get_id();
+  sgtllc::parallelFor(5, 1, [&](int i) {
+    EXPECT_EQ(std::this_thread::get_id(), caller);
+    order.push_back(i);
+  });
+  EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+TEST(ParallelFor, NestedCallRunsInOrderOnTheCallingThread) {
+  std::vector<std::vector<int>> inner(4);
+  std::vector<int> same_thread(4, 1);
+  sgtllc::parallelFor(4, 2, [&](int i) {
+    const std::thread::id outer = std::this_thread::get_id();
+    sgtllc::parallelFor(6, 4, [&](int k) {
+      if (std::this_thread::get_id() != outer) same_thread[static_cast<size_t>(i)] = 0;
+      inner[static_cast<size_t>(i)].push_back(k);  // only this item's thread writes here
+    });
+  });
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(same_thread[static_cast<size_t>(i)], 1);
+    EXPECT_EQ(inner[static_cast<size_t>(i)], (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  }
+  // After the outer call, this thread starts a team again: item 0 waits for item 1, which only another thread can
+  // run meanwhile (in order, item 1 would start after item 0 gave up waiting).
+  std::atomic<bool> second_ran{false};
+  bool waited = false;
+  sgtllc::parallelFor(2, 2, [&](int i) {
+    if (i == 1) {
+      second_ran = true;
+      return;
+    }
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!second_ran && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
+    waited = second_ran;
+  });
+  EXPECT_TRUE(waited);
+}
+
+}  // namespace
