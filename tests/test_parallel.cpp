@@ -24,7 +24,7 @@ TEST(ParallelFor, EveryIndexExactlyOnceAtAnyThreadCount) {
   }
 }
 
-TEST(ParallelFor, AtMostTheThreadsAskedForAndTheCallerAmongThem) {
+TEST(ParallelFor, AtMostTheThreadsAskedForAndOneRunsInOrderOnTheCaller) {
   std::mutex m;
   std::set<std::thread::id> ids;
   sgtllc::parallelFor(200, 3, [&](int) {
