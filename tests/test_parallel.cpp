@@ -1,6 +1,5 @@
 // parallelFor (include/sgtllc/parallel.h): every index exactly once at any thread count, no more threads than
 // asked for, and a nested call run in order on the calling thread.
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
