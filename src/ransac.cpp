@@ -62,8 +62,8 @@ Eigen::Matrix4d kabsch(const std::vector<Eigen::Vector3d>& source, const std::ve
 /// A rigid motion keeps distances, so two pairs that are both inliers (each within the threshold r of its target)
 /// have source and target distances that differ by less than 2r. A minimal sample (three pairs) that fails this
 /// cannot be all inliers, and its exact fit is then a wrong hypothesis: it is skipped before the SVD. Most
-/// samples of a wrong candidate fail it, which is most of RANSAC's time (BENCHMARKS.md "Association and RANSAC sample"). A
-/// larger sample is not checked: its least-squares fit can still be right with one outlier in it.
+/// samples of a wrong candidate fail it, which is most of RANSAC's time (BENCHMARKS.md "Association and RANSAC
+/// sample"). A larger sample is not checked: its least-squares fit can still be right with one outlier in it.
 bool distancesAgree(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
                     const std::vector<int>& sample, double threshold) {
   for (size_t a = 0; a < sample.size(); ++a) {
