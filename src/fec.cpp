@@ -1,10 +1,12 @@
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
+#include "internal/fec_search.h"
 #include "internal/voxel_hash.h"
 #include "sgtllc/clustering.h"
 
@@ -17,8 +19,19 @@ class HashGrid {
  public:
   HashGrid(const std::vector<Eigen::Vector3f>& points, double cell)
       : inv_cell_(static_cast<float>(1.0 / cell)), index_(points.size() / 2 + 16) {
+    // Consecutive points mostly share a cell (scan order, and voxels in order of first appearance): the hash table
+    // is probed only when the cell changes.
     std::vector<uint32_t> cell_of(points.size());
-    for (size_t i = 0; i < points.size(); ++i) cell_of[i] = index_.insert(internal::cellOf(points[i], inv_cell_));
+    internal::Cell last{INT32_MIN, INT32_MIN, INT32_MIN};  // no clamped cell coordinate is INT32_MIN
+    uint32_t last_index = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const internal::Cell c = internal::cellOf(points[i], inv_cell_);
+      if (!(c == last)) {
+        last = c;
+        last_index = index_.insert(c);
+      }
+      cell_of[i] = last_index;
+    }
     start_.assign(index_.size() + 1, 0);
     for (uint32_t c : cell_of) ++start_[c + 1];
     std::partial_sum(start_.begin(), start_.end(), start_.begin());
@@ -39,10 +52,9 @@ class HashGrid {
   Block blockAround(const Eigen::Vector3f& p, float half) const {
     const Eigen::Array3f t = p.array() * inv_cell_;
     const float reach = std::min(0.999f, half + 1e-4f + 1e-6f * t.abs().maxCoeff());
-    const Eigen::Array3f lo = (t - reach).floor().max(-internal::kMaxCell).min(internal::kMaxCell);
-    const Eigen::Array3f hi = (t + reach).floor().max(-internal::kMaxCell).min(internal::kMaxCell);
-    return Block{internal::Cell{static_cast<int32_t>(lo.x()), static_cast<int32_t>(lo.y()), static_cast<int32_t>(lo.z())},
-                 internal::Cell{static_cast<int32_t>(hi.x()), static_cast<int32_t>(hi.y()), static_cast<int32_t>(hi.z())}};
+    using internal::floorCell;
+    return Block{internal::Cell{floorCell(t.x() - reach), floorCell(t.y() - reach), floorCell(t.z() - reach)},
+                 internal::Cell{floorCell(t.x() + reach), floorCell(t.y() + reach), floorCell(t.z() + reach)}};
   }
 
   /// The occupied cells of a block of at most 3 × 3 × 3; returns their number.
@@ -106,6 +118,15 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
 
 std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eigen::Vector3f>& points, double radius,
                                                           int max_neighbors, int min_size) {
+  const size_t cap = max_neighbors > 0 ? static_cast<size_t>(max_neighbors) : 1;
+  return internal::fastEuclideanClustering(points, radius, max_neighbors, min_size,
+                                           std::max<size_t>(8 * cap, internal::kDenseCandidates));
+}
+
+namespace internal {
+
+std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eigen::Vector3f>& points, double radius,
+                                                          int max_neighbors, int min_size, size_t dense_count) {
   if (!(radius > 0.0)) throw std::invalid_argument("fastEuclideanClustering: radius must be positive");
   if (max_neighbors < 1) throw std::invalid_argument("fastEuclideanClustering: max_neighbors must be >= 1");
   const size_t n = points.size();
@@ -117,13 +138,12 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   const size_t cap = static_cast<size_t>(max_neighbors);
 
   // Dense neighbourhoods: classes clustered without downsampling (trunk, pole, sign; algorithm §2) can put thousands of
-  // points within r of a seed, and every seed would scan them all to keep its nearest max_neighbors. There a finer
-  // grid is searched ring by ring around the seed, and the search stops once the max_neighbors-th nearest point
+  // points within r of a seed, and every seed would scan them all to keep its nearest max_neighbors. Above
+  // dense_count candidates (kDenseCandidates, fec_search.h) a finer grid is searched ring by ring around the seed, and the search stops once the max_neighbors-th nearest point
   // found is closer than any point outside the rings searched can be. The kept set, and so the clusters, are
   // exactly those of the full scan (pairs are ordered by (distance², index)).
   constexpr int kFineDivisions = 16;  // fine cell = r / 16
   constexpr int kMaxFineRing = 5;     // fine rings searched before falling back to the full scan
-  const size_t dense_count = std::max<size_t>(8 * cap, 256);
   const float fine_cell = static_cast<float>(radius / kFineDivisions);
   std::optional<HashGrid> fine;  // built at the first dense seed
 
@@ -137,6 +157,7 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   HashGrid::Block seed_block{};
   size_t candidates = 0;
   bool have_cells = false;
+  bool rings_failed = false;  // a seed of this block searched the fine rings without settling
   for (uint32_t seed = 0; seed < n; ++seed) {
     if (reached[seed]) continue;  // only points no earlier seed reached become seeds (algorithm §2)
     const Eigen::Vector3f& p = points[seed];
@@ -150,11 +171,14 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
       seed_block = block;
       have_cells = true;
       num_cells = grid.cellsIn(block, cells);
+      rings_failed = false;
       candidates = 0;
       for (int c = 0; c < num_cells; ++c) candidates += grid.cellSize(cells[c]);
     }
     bool settled = false;
-    if (candidates > dense_count) {
+    // Seeds of one block share its density: once the rings fail to settle there (a sparse trunk: the nearest
+    // max_neighbors reach beyond them), the next seeds of the block go straight to the full scan.
+    if (candidates > dense_count && !rings_failed) {
       if (!fine) fine.emplace(points, fine_cell);
       const float slack = 1e-3f + 1e-6f * p.cwiseAbs().maxCoeff();
       const internal::Cell fine_cell_of_p = fine->cellOf(p);
@@ -174,7 +198,10 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
         near.resize(cap);
         settled = true;
       }
-      if (!settled) near.clear();
+      if (!settled) {
+        near.clear();
+        rings_failed = true;
+      }
     }
     if (!settled) {
       for (int c = 0; c < num_cells; ++c) grid.forEachIn(cells[c], consider);
@@ -184,11 +211,16 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
       std::nth_element(near.begin(), near.begin() + (cap - 1), near.end());
       near.resize(cap);
     }
+    // The seed's root is tracked across the unions instead of looked up per neighbour; every root stays the
+    // smallest index of its component either way, and only the components are read below.
+    uint32_t a = findRoot(parent, seed);
     for (const auto& [d2, q] : near) {
       reached[q] = 1;
-      const uint32_t a = findRoot(parent, seed);
       const uint32_t b = findRoot(parent, q);
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+      if (a != b) {
+        parent[std::max(a, b)] = std::min(a, b);
+        a = std::min(a, b);
+      }
     }
   }
 
@@ -209,4 +241,5 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   return clusters;
 }
 
+}  // namespace internal
 }  // namespace sgtllc

@@ -268,6 +268,39 @@ TEST(NodeExtractor, SameNodesAndStatsAtAnyThreadCount) {
   }
 }
 
+TEST(NodeExtractor, OutOfBoundsPointsAreCountedAndChangeNoNode) {
+  // A scan whose coordinates are all finite and within ±kMaxCoordinate takes the class split without a per-point
+  // bound test; one bad point sends it through the tested split. Both must give the same nodes, to the bit.
+  LabeledCloud cloud;
+  addGrid(&cloud, 50, {0, 0, 0}, kX, kZ, 40, 25);
+  addGrid(&cloud, 70, {8, 3, 0}, kY, kZ, 30, 30);
+  addRing(&cloud, 71, {-6, 2, 0}, 0.0f, 40);
+  addRing(&cloud, 80, {3, -7, 0}, 0.0f, 30);
+  cloud.points.emplace_back(1.0f, 2.0f, 3.0f);
+  cloud.labels.push_back(12345);  // unknown id
+  sgtllc::ClusterConfig config;
+  for (auto& c : config.classes) c.min_size = 5;
+  const auto clean = NodeExtractor(config, {}).extract(cloud);
+  ASSERT_EQ(clean.nodes.size(), 4u);
+  EXPECT_EQ(clean.stats.unknown_label_points, 1u);
+  EXPECT_EQ(clean.stats.nonfinite_points + clean.stats.far_points, 0u);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const Eigen::Vector3f bad[] = {{nan, 0, 0}, {0, -inf, 0}, {0, 0, 2.0e6f}, {-1.5e6f, 0, 0}, {0, 1.0e6f, 0}};
+  for (const Eigen::Vector3f& p : bad) {
+    cloud.points.insert(cloud.points.begin() + 7, p);  // among the building's points
+    cloud.labels.insert(cloud.labels.begin() + 7, 50);
+  }
+  const auto dirty = NodeExtractor(config, {}).extract(cloud);
+  EXPECT_EQ(dirty.stats.nonfinite_points, 2u);
+  EXPECT_EQ(dirty.stats.far_points, 2u);  // ±1e6 m itself is within bounds
+  EXPECT_EQ(dirty.stats.class_points[0], clean.stats.class_points[0] + 1);
+  ASSERT_EQ(dirty.nodes.size(), clean.nodes.size());  // the lone point at 1e6 m is below min_size
+  for (size_t k = 0; k < clean.nodes.size(); ++k) {
+    EXPECT_EQ(dirty.nodes[k].label, clean.nodes[k].label);
+    EXPECT_EQ(dirty.nodes[k].centre, clean.nodes[k].centre);  // bitwise
+  }
+}
+
 TEST(NodeExtractor, InvalidClassParametersThrowFromParallelClustering) {
   // A ClusterConfig that never went through Config::validate: the error of a worker thread reaches the caller.
   LabeledCloud cloud;

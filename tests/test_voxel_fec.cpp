@@ -1,6 +1,7 @@
 // Voxel downsampling and FEC (algorithm §1–§2), against brute-force references on synthetic clouds.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
@@ -10,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "internal/fec_search.h"
+#include "internal/voxel_hash.h"
 #include "sgtllc/clustering.h"
 #include "test_clustering_support.h"
 
@@ -201,6 +204,33 @@ TEST(VoxelDownsample, DistantVoxelsNeverShareACell) {
   EXPECT_EQ(out.centroids[1].x(), 838870.8f);
 }
 
+TEST(VoxelCells, FloorMatchesStdFloorAndClamps) {
+  // The cell arithmetic replaces std::floor (internal/voxel_hash.h): it must agree on integers, on both sides of
+  // zero, next to integers and at the clamp, and map NaN to a fixed cell.
+  using sgtllc::internal::floorBounded;
+  using sgtllc::internal::floorCell;
+  using sgtllc::internal::kMaxCell;
+  std::vector<float> values = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, -0.5f, 2.999999f, -2.999999f, 1e-30f, -1e-30f,
+                               123456.7f, -123456.7f, 1.0e9f, -1.0e9f};
+  for (float v : {1.0f, -1.0f, 1000.0f, -1000.0f, 1048576.0f, -1048576.0f}) {
+    values.push_back(std::nextafter(v, 0.0f));
+    values.push_back(std::nextafter(v, 2.0f * v));
+  }
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-2.5e3f, 2.5e3f);
+  for (int k = 0; k < 10000; ++k) values.push_back(u(rng));
+  for (float v : values) {
+    const auto expected = static_cast<int32_t>(std::floor(v));
+    EXPECT_EQ(floorCell(v), expected) << v;
+    EXPECT_EQ(floorBounded(v), expected) << v;
+  }
+  const auto max_cell = static_cast<int32_t>(kMaxCell);
+  EXPECT_EQ(floorCell(3.0e9f), max_cell);
+  EXPECT_EQ(floorCell(-3.0e9f), -max_cell);
+  EXPECT_EQ(floorCell(std::numeric_limits<float>::infinity()), max_cell);
+  EXPECT_EQ(floorCell(std::numeric_limits<float>::quiet_NaN()), -max_cell);
+}
+
 TEST(VoxelDownsample, EmptyInput) { EXPECT_TRUE(sgtllc::voxelDownsample({}, 0.4).centroids.empty()); }
 
 // --- (b) FEC -------------------------------------------------------------------------------------------------------
@@ -269,9 +299,11 @@ TEST(Fec, CappedEqualsSpecTransliteration) {
 }
 
 TEST(Fec, DenseNeighbourhoodsEqualSpecTransliteration) {
-  // Thousands of points within r of each seed, as a trunk next to the sensor clustered without downsampling:
-  // fastEuclideanClustering then searches a finer grid ring by ring (tight blobs settle within the rings, wide ones
-  // fall back to the full scan); either way the clusters must equal the reference's.
+  // Thousands of points within r of each seed, as a trunk next to the sensor clustered without downsampling. Above
+  // a threshold of candidates per seed (internal::kDenseCandidates) fastEuclideanClustering searches a finer grid ring
+  // by ring (tight blobs settle within the rings, wide ones fall back to the full scan); the threshold is lowered
+  // here so that these clouds take the rings, and the public function, which scans them in full, is checked too.
+  // Every way, the clusters must equal the reference's.
   const std::pair<float, int> blobs[] = {{0.04f, 2400}, {0.15f, 2400}, {0.5f, 2000}};
   for (const auto& [sigma, n] : blobs) {
     Cloud pts = gaussianBlobs(31, 2, n / 2, sigma, 1.5f);
@@ -279,7 +311,11 @@ TEST(Fec, DenseNeighbourhoodsEqualSpecTransliteration) {
     pts.insert(pts.end(), strand.begin(), strand.end());
     for (int cap : {3, 5, 12, 100, 250}) {
       SCOPED_TRACE("sigma " + std::to_string(sigma) + " cap " + std::to_string(cap));
-      EXPECT_EQ(fastEuclideanClustering(pts, 1.0, cap, 1), fecReference(pts, 1.0, cap, 1));
+      const Clusters reference = fecReference(pts, 1.0, cap, 1);
+      EXPECT_EQ(fastEuclideanClustering(pts, 1.0, cap, 1), reference);
+      for (size_t dense : {size_t{256}, static_cast<size_t>(8 * cap)}) {
+        EXPECT_EQ(sgtllc::internal::fastEuclideanClustering(pts, 1.0, cap, 1, dense), reference) << "dense " << dense;
+      }
     }
   }
 }

@@ -26,10 +26,28 @@ struct Cell {
 /// Node extraction drops points beyond ±1e6 m and configs need leaves ≥ 1 mm, so real cells stay below it.
 inline constexpr float kMaxCell = 1073741824.0f;  // 2^30
 
+/// floor(t) clamped to ±kMaxCell, as an integer. Truncation then a step down for negative non-integers: the build's
+/// baseline x86-64 has no rounding instruction, and std::floor compiles there to a much longer sequence; node
+/// extraction takes this for every point of a scan (BENCHMARKS.md "Time per frame"). NaN maps to −kMaxCell.
+inline int32_t floorCell(float t) {
+  const float c = t > -kMaxCell ? (t < kMaxCell ? t : kMaxCell) : -kMaxCell;
+  const int32_t i = static_cast<int32_t>(c);
+  return i - (c < static_cast<float>(i) ? 1 : 0);
+}
+
 /// The cell of a point for cells of edge 1 / inv_size.
 inline Cell cellOf(const Eigen::Vector3f& p, float inv_size) {
-  const Eigen::Array3f c = (p.array() * inv_size).floor().max(-kMaxCell).min(kMaxCell);
-  return Cell{static_cast<int32_t>(c.x()), static_cast<int32_t>(c.y()), static_cast<int32_t>(c.z())};
+  return Cell{floorCell(p.x() * inv_size), floorCell(p.y() * inv_size), floorCell(p.z() * inv_size)};
+}
+
+/// cellOf for a point within ±kMaxCoordinate and cells of at least 1 mm (node extraction's points and configs), whose
+/// cell coordinates stay below 2^30 without clamping.
+inline int32_t floorBounded(float t) {
+  const int32_t i = static_cast<int32_t>(t);
+  return i - (t < static_cast<float>(i) ? 1 : 0);
+}
+inline Cell boundedCellOf(const Eigen::Vector3f& p, float inv_size) {
+  return Cell{floorBounded(p.x() * inv_size), floorBounded(p.y() * inv_size), floorBounded(p.z() * inv_size)};
 }
 
 inline Cell offset(const Cell& c, int dx, int dy, int dz) { return Cell{c.x + dx, c.y + dy, c.z + dz}; }
@@ -52,15 +70,16 @@ class KeyIndex {
 
   /// Index of @p key, inserting it with the next dense index if absent.
   uint32_t insert(const Cell& key) {
-    if (2 * (keys_.size() + 1) > slots_.size()) grow();
     size_t pos = hash(key) & mask_;
-    while (slots_[pos] != kMissing) {
-      if (keys_[slots_[pos]] == key) return slots_[pos];
+    for (uint32_t slot = slots_[pos]; slot != kMissing; slot = slots_[pos]) {
+      if (keys_[slot] == key) return slot;
       pos = (pos + 1) & mask_;
     }
-    const uint32_t index = static_cast<uint32_t>(keys_.size());
+    const uint32_t index = size_;
     slots_[pos] = index;
     keys_.push_back(key);
+    ++size_;
+    if (2 * static_cast<size_t>(size_) > mask_) grow();  // at most half full
     return index;
   }
 
@@ -74,7 +93,7 @@ class KeyIndex {
     return kMissing;
   }
 
-  uint32_t size() const { return static_cast<uint32_t>(keys_.size()); }
+  uint32_t size() const { return size_; }
 
  private:
   // splitmix64 finaliser over the packed coordinates: neighbouring cells differ in few low bits, so they need
@@ -103,10 +122,11 @@ class KeyIndex {
   std::vector<uint32_t> slots_;  // dense index per table position, kMissing when empty
   std::vector<Cell> keys_;       // keys_[index]: the cell of each index
   size_t mask_ = 0;
+  uint32_t size_ = 0;            // keys_.size()
 };
 
 /// Builds a VoxelizedCloud one point at a time (voxelDownsample, and node extraction straight from the class split
-/// so that no per-class copy of the points is made). Consecutive scan points mostly share a voxel, so the last
+/// so that no per-class copy of the points is made). Consecutive scan points often share a voxel, so the last
 /// voxel is remembered and the hash table is probed only when the voxel changes; indices, sums and their order of
 /// accumulation are those of one insert per point.
 class VoxelAccumulator {
@@ -117,20 +137,10 @@ class VoxelAccumulator {
     out_.counts.reserve(expected_points / 4 + 16);
   }
 
-  void add(const Eigen::Vector3f& p) {
-    const Cell c = cellOf(p, inv_leaf_);
-    if (!(has_last_ && c == last_)) {
-      last_ = c;
-      last_index_ = index_.insert(c);
-      has_last_ = true;
-      if (last_index_ == out_.sums.size()) {
-        out_.sums.emplace_back(Eigen::Vector3d::Zero());
-        out_.counts.push_back(0);
-      }
-    }
-    out_.sums[last_index_] += p.cast<double>();
-    ++out_.counts[last_index_];
-  }
+  /// Any point (cell coordinates clamped, cellOf).
+  void add(const Eigen::Vector3f& p) { addIn(cellOf(p, inv_leaf_), p); }
+  /// A point within ±kMaxCoordinate, for a leaf of at least 1 mm (boundedCellOf): node extraction's hot loop.
+  void addBounded(const Eigen::Vector3f& p) { addIn(boundedCellOf(p, inv_leaf_), p); }
 
   /// The voxels in order of first appearance, with their centroids.
   VoxelizedCloud finish() && {
@@ -142,12 +152,28 @@ class VoxelAccumulator {
   }
 
  private:
+  void addIn(const Cell& c, const Eigen::Vector3f& p) {
+    if (!(c == last_)) {
+      last_ = c;
+      last_index_ = index_.insert(c);
+      if (last_index_ == voxels_) {
+        out_.sums.emplace_back(Eigen::Vector3d::Zero());
+        out_.counts.push_back(0);
+        ++voxels_;
+      }
+    }
+    out_.sums[last_index_] += p.cast<double>();
+    ++out_.counts[last_index_];
+  }
+
+  // No cell coordinate is INT32_MIN (both cellOf variants stay within ±2^30), so the first point always probes.
+  static constexpr int32_t kNoCell = INT32_MIN;
   float inv_leaf_;
   KeyIndex index_;
   VoxelizedCloud out_;
-  Cell last_{0, 0, 0};
+  Cell last_{kNoCell, kNoCell, kNoCell};
   uint32_t last_index_ = 0;
-  bool has_last_ = false;
+  uint32_t voxels_ = 0;  // out_.sums.size()
 };
 
 }  // namespace sgtllc::internal
