@@ -132,6 +132,8 @@ void sections(py::module_& m) {
                      "top-1: the closest candidate scoring within this of the best")
       .def_readwrite("lateral_distance", &VerificationConfig::lateral_distance,
                      "a top-1 estimated this far (m) or more is lateral")
+      .def_readwrite("neighbour_frames", &VerificationConfig::neighbour_frames,
+                     "also verify the top-1 loop's database neighbours within this many frames; 0 = off")
       .def_readwrite("offset_decay_start", &VerificationConfig::offset_decay_start,
                      "score_t decays linearly for an estimated offset beyond this (m)")
       .def_readwrite("offset_decay_end", &VerificationConfig::offset_decay_end,

@@ -80,6 +80,8 @@ void bindResults(py::module_& m) {
   py::class_<Candidate>(m, "Candidate", "One retrieved candidate frame and its verification.")
       .def_readonly("frame", &Candidate::frame, "database index of the candidate")
       .def_readonly("distance2", &Candidate::distance2, "squared L2 distance of the global descriptors")
+      .def_readonly("retrieved", &Candidate::retrieved,
+                    "False for a database neighbour of the top-1 verified by verification.neighbour_frames")
       .def_readonly("match", &Candidate::match, "MatchResult (query -> candidate)")
       .def_readonly("refinement", &Candidate::refinement, "Refinement of the declared loop (registration.online), or None");
 

@@ -105,6 +105,7 @@ class VerificationConfig:
     seed: int
     select_margin: float
     lateral_distance: float
+    neighbour_frames: int
     offset_decay_start: float
     offset_decay_end: float
 class GroundConfig:
@@ -260,6 +261,7 @@ class Refinement:
 class Candidate:
     frame: int
     distance2: float
+    retrieved: bool
     match: MatchResult
     refinement: Optional[Refinement]
 class FrameResult:

@@ -148,6 +148,7 @@ void Config::validate() const {
   checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
   checkReal("verification.select_margin", v.select_margin, {0.0}, {1.0});
   checkReal("verification.lateral_distance", v.lateral_distance, {0.0, false}, {1000.0});
+  checkInt("verification.neighbour_frames", v.neighbour_frames, 0, 50);
   checkReal("verification.offset_decay_start", v.offset_decay_start, {0.0}, {1000.0});
   checkReal("verification.offset_decay_end", v.offset_decay_end, {0.0}, {1000.0});
   if (v.offset_decay_end > 0.0 && v.offset_decay_end <= v.offset_decay_start) {

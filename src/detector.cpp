@@ -126,6 +126,41 @@ void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, 
 
 namespace {
 
+/// Squared L2 distance between a query key and a stored global descriptor of the same dimension.
+float squaredDistance(const std::vector<float>& key, const float* stored) {
+  float d2 = 0.0f;
+  for (size_t k = 0; k < key.size(); ++k) d2 += (key[k] - stored[k]) * (key[k] - stored[k]);
+  return d2;
+}
+
+/// Verifies candidates[first..] against the query; each writes only its own slot. Cache look-ups and inserts stay on
+/// this thread, in candidate order; workers describe the misses.
+void verifyCandidates(const DescribedFrame& query, const FrameDatabase& database, const Config& config,
+                      internal::DescribedCache* cache, std::vector<Candidate>& candidates, size_t first) {
+  const size_t count = candidates.size() - first;
+  std::vector<std::shared_ptr<const DescribedFrame>> described(count);
+  if (cache) {
+    for (size_t c = 0; c < count; ++c) described[c] = cache->find(candidates[first + c].frame);
+  }
+  parallelFor(static_cast<int>(count), config.threads, [&](int c) {
+    Candidate& cand = candidates[first + static_cast<size_t>(c)];
+    if (!described[c]) {
+      described[c] = std::make_shared<const DescribedFrame>(describeFrame(
+          database.nodes(cand.frame), config.graph, config.descriptor, /*with_global=*/false, config.numClasses()));
+    }
+    cand.match = matchFrames(query, *described[c], config);
+  });
+  if (cache) {
+    for (size_t c = 0; c < count; ++c) cache->insert(candidates[first + c].frame, std::move(described[c]));
+  }
+}
+
+int chooseCandidate(const std::vector<Candidate>& candidates, const VerificationConfig& config) {
+  std::vector<const MatchResult*> matches;
+  for (const Candidate& cand : candidates) matches.push_back(&cand.match);
+  return selectCandidate(matches, config);
+}
+
 void search(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database, int last,
             const Config& config, FrameResult* result, internal::DescribedCache* cache) {
   auto start = Clock::now();
@@ -136,27 +171,36 @@ void search(const DescribedFrame& query, const std::vector<float>& key, const Fr
   start = Clock::now();
   std::sort(retrieved.begin(), retrieved.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
   result->candidates.assign(retrieved.size(), Candidate{});
-  // Cache look-ups and inserts stay on this thread, in frame order; workers describe the misses.
-  std::vector<std::shared_ptr<const DescribedFrame>> described(retrieved.size());
-  if (cache) {
-    for (size_t c = 0; c < retrieved.size(); ++c) described[c] = cache->find(retrieved[c].frame);
+  for (size_t c = 0; c < retrieved.size(); ++c) {
+    result->candidates[c].frame = retrieved[c].frame;
+    result->candidates[c].distance2 = retrieved[c].distance2;
   }
-  parallelFor(static_cast<int>(retrieved.size()), config.threads, [&](int c) {
-    Candidate& cand = result->candidates[c];
-    cand.frame = retrieved[c].frame;
-    cand.distance2 = retrieved[c].distance2;
-    if (!described[c]) {
-      described[c] = std::make_shared<const DescribedFrame>(describeFrame(
-          database.nodes(cand.frame), config.graph, config.descriptor, /*with_global=*/false, config.numClasses()));
+  verifyCandidates(query, database, config, cache, result->candidates, 0);
+  result->best = chooseCandidate(result->candidates, config.verification);
+
+  // Neighbour check (VerificationConfig::neighbour_frames): the top-1 loop's database neighbours that retrieval
+  // missed are verified as well, and the choice is made again among all, in ascending frame index.
+  const int reach = config.verification.neighbour_frames;
+  if (reach > 0 && result->best >= 0 && isLoop(result->candidates[result->best].match, config.verification)) {
+    const int top = result->candidates[result->best].frame;
+    const size_t first_added = result->candidates.size();
+    for (int g = std::max(0, top - reach); g <= std::min(last, top + reach); ++g) {
+      const bool listed = std::any_of(result->candidates.begin(), result->candidates.begin() + first_added,
+                                      [g](const Candidate& c) { return c.frame == g; });
+      if (listed) continue;
+      Candidate added;
+      added.frame = g;
+      added.distance2 = squaredDistance(key, database.global(g));
+      added.retrieved = false;
+      result->candidates.push_back(std::move(added));
     }
-    cand.match = matchFrames(query, *described[c], config);
-  });
-  if (cache) {
-    for (size_t c = 0; c < retrieved.size(); ++c) cache->insert(retrieved[c].frame, std::move(described[c]));
+    if (result->candidates.size() > first_added) {
+      verifyCandidates(query, database, config, cache, result->candidates, first_added);
+      std::stable_sort(result->candidates.begin(), result->candidates.end(),
+                       [](const Candidate& a, const Candidate& b) { return a.frame < b.frame; });
+      result->best = chooseCandidate(result->candidates, config.verification);
+    }
   }
-  std::vector<const MatchResult*> matches;
-  for (const Candidate& cand : result->candidates) matches.push_back(&cand.match);
-  result->best = selectCandidate(matches, config.verification);
   const Candidate* best = result->best >= 0 ? &result->candidates[result->best] : nullptr;
   result->lateral = best && isLateral(best->match, config.verification);
   result->is_loop = best && isLoop(best->match, config.verification);

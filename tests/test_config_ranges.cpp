@@ -88,6 +88,7 @@ std::vector<Range> ranges() {
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
   r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
   r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
+  r.push_back({"verification.neighbour_frames", {"0", "50"}, {"-1", "51"}, "[0, 50]"});
   r.push_back({"verification.offset_decay_start", {"0", "5"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.offset_decay_end", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
@@ -210,8 +211,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 32 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 32 + 18 + 15 + 26);
+  // 8 classes incl. vehicle, 33 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 33 + 18 + 15 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

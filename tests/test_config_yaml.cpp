@@ -155,6 +155,7 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(paper.verification.min_associations, 7);
   EXPECT_EQ(paper.verification.min_inliers, 5);
   EXPECT_EQ(paper.verification.select_margin, 0.0);
+  EXPECT_EQ(paper.verification.neighbour_frames, 0);
   const Config code = io::loadConfig(dir + "authors-code.yaml");
   EXPECT_EQ(code.descriptor.global_mode, GlobalMode::kG2);
   EXPECT_EQ(code.retrieval.key, RetrievalKey::kGlobalDescriptor);

@@ -295,11 +295,59 @@ TEST(LoopDetector, KeptCandidateDescriptionsGiveTheResultsOfDescribingAfresh) {
     const DescribedFrame query = describeFrame(frameNodes(k), config.graph, config.descriptor, false);
     searchDatabase(query, retrieval::computeRetrievalKey(query.graph, config), detector.database(),
                    k - config.retrieval.exclude_recent, config, &fresh[k]);
-    ASSERT_EQ(online[k].candidates.size(), static_cast<size_t>(std::min(15, k - 4))) << "frame " << k;
+    const auto retrieved = std::count_if(online[k].candidates.begin(), online[k].candidates.end(),
+                                         [](const Candidate& c) { return c.retrieved; });
+    ASSERT_EQ(retrieved, std::min(15, k - 4)) << "frame " << k;
     loops += online[k].is_loop;
   }
   EXPECT_GT(loops, n / 2);  // the copies verify
   expectIdentical(online, fresh);
+}
+
+TEST(LoopDetector, NeighbourCheckChoosesTheClosestFrameOfThePass) {
+  // One street layout seen from 10 stations 1 m apart (frame i: offset i m), then a revisit 3.1 m along it. Every
+  // frame has the same global key, so with one candidate retrieved the top-1 is whichever retrieval returns; the
+  // neighbour check then verifies the database frames within ±k of it and takes the one whose estimated offset is
+  // smallest (all score alike), i.e. the retrieved frame moved up to k stations towards station 3.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-30.0, 30.0);
+  std::vector<Node> layout;
+  for (int k = 0; k < 24; ++k) layout.push_back(Node{Eigen::Vector3d(u(rng), u(rng), 0.3 * (k % 4)), k % 7});
+  auto seenFrom = [&](double x) {
+    std::vector<Node> nodes = layout;
+    for (Node& n : nodes) n.centre.x() -= x;
+    return nodes;
+  };
+  for (int reach : {0, 1, 2, 3}) {
+    SCOPED_TRACE("neighbour_frames " + std::to_string(reach));
+    Config config;
+    config.retrieval.exclude_recent = 1;
+    config.retrieval.num_candidates = 1;
+    config.verification.neighbour_frames = reach;
+    LoopDetector detector(config);
+    for (int i = 0; i < 10; ++i) detector.process(seenFrom(i));
+    const FrameResult r = detector.process(seenFrom(3.1));
+    ASSERT_TRUE(r.is_loop);
+    const auto retrieved = std::find_if(r.candidates.begin(), r.candidates.end(),
+                                        [](const Candidate& c) { return c.retrieved; });
+    ASSERT_NE(retrieved, r.candidates.end());
+    const int from = retrieved->frame;
+    int expected = from;  // the station within reach closest to 3.1
+    for (int g = std::max(0, from - reach); g <= std::min(9, from + reach); ++g) {
+      if (std::abs(g - 3.1) < std::abs(expected - 3.1)) expected = g;
+    }
+    EXPECT_EQ(r.loop()->frame, expected);
+    EXPECT_NEAR(r.loop()->match.T_match_query(0, 3), 3.1 - expected, 1e-6);
+    // The added frames are the in-range neighbours, marked as not retrieved, in ascending frame order.
+    const int in_range = std::min(9, from + reach) - std::max(0, from - reach) + 1;
+    EXPECT_EQ(static_cast<int>(r.candidates.size()), in_range);
+    for (size_t c = 0; c < r.candidates.size(); ++c) {
+      EXPECT_EQ(r.candidates[c].retrieved, r.candidates[c].frame == from);
+      if (c > 0) {
+        EXPECT_LT(r.candidates[c - 1].frame, r.candidates[c].frame);
+      }
+    }
+  }
 }
 
 TEST(LoopDetector, RejectsAnInvalidConfig) {

@@ -262,6 +262,13 @@ struct VerificationConfig {
   /// loop (its pose is a valid constraint), but the top-1 protocol does not claim it as a revisit (m) (0, 1000].
   /// [deviation: issue 13 item 3; 3 m is the protocols' positive distance]
   double lateral_distance = 3.0;
+  /// Neighbour check of the top-1 (detector.h, Candidate::retrieved): when the chosen candidate is a loop, the
+  /// database frames within ±neighbour_frames of it that retrieval did not return are verified too, and the top-1
+  /// is chosen again among all (select_margin). Consecutive frames of the old pass see nearly the same scene, so
+  /// the one nearest the query often scores within the margin yet ranks outside the K retrieved. 0 = off, as the
+  /// paper [0, 50]. [deviation: issue 13 item 3; tuned on the urban11 and sub7 sequences, see BENCHMARKS.md
+  /// ("Top-1 choice")]
+  int neighbour_frames = 2;
   /// Offset decay of score_t (verification.h, offsetWeight): a verified candidate whose estimated offset
   /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score_t is scaled down linearly to 0
   /// at offset_decay_end (m) [0, 1000]. [deviation: issue 13 (pairwise EP). The highest-scoring wrong matches were

@@ -36,6 +36,9 @@ struct StageTimes {
 struct Candidate {
   int frame = -1;           ///< database index of the candidate
   float distance2 = 0.0f;   ///< squared L2 distance of the global descriptors
+  /// false: not returned by retrieval but a database neighbour of the top-1 (verification.neighbour_frames);
+  /// the retrieval and pairwise protocols count only the retrieved candidates.
+  bool retrieved = true;
   MatchResult match;        ///< association, scores and pose (query → candidate)
   /// ICP of the declared loop (registration.online, points input only); when used(), match.T_match_query is the
   /// refined pose and the seed is kept here.

@@ -184,11 +184,11 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   out.text("frames.csv", frames.str());
 
   std::ostringstream pairs;
-  pairs << "query,candidate,distance_m,score,score_c,rejection,estimated_distance_m\n";
+  pairs << "query,candidate,distance_m,score,score_c,rejection,estimated_distance_m,retrieved\n";
   for (const FrameRecord& f : run.frames) {
     for (const CandidateRecord& c : f.candidates) {
       pairs << f.name << "," << name(c.frame) << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
-            << rejectionName(c.rejection) << "," << c.estimated_distance << "\n";
+            << rejectionName(c.rejection) << "," << c.estimated_distance << "," << (c.retrieved ? 1 : 0) << "\n";
     }
   }
   out.text("candidates.csv", pairs.str());

@@ -41,7 +41,7 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
       const long f = numbers[static_cast<size_t>(c.frame)];
       rec.candidates.push_back(CandidateRecord{f, c.match.score_t, c.match.score_c, truth.distance(rec.frame, f),
                                                c.distance2, c.match.rejection,
-                                               c.match.T_match_query.topRightCorner<3, 1>().norm()});
+                                               c.match.T_match_query.topRightCorner<3, 1>().norm(), c.retrieved});
     }
     rec.best = r.best;
     rec.is_loop = r.is_loop;
@@ -91,6 +91,7 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
     std::vector<ScoredSample> samples;
     for (const FrameRecord& f : run.frames) {
       for (const CandidateRecord& c : f.candidates) {
+        if (!c.retrieved) continue;  // the K retrieved per query, as the paper
         if (c.distance < d) samples.push_back({c.score_t, true});
         else if (c.distance > options.negative_distance) samples.push_back({c.score_t, false});
       }
@@ -109,11 +110,12 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
     ++out.n_queries;
     out.n_revisit_queries += f.has_revisit;
     bool retrieved = false;
-    for (const CandidateRecord& c : f.candidates) retrieved = retrieved || c.distance < positive;
+    for (const CandidateRecord& c : f.candidates) retrieved = retrieved || (c.retrieved && c.distance < positive);
     out.retrieval_recall += f.has_revisit && retrieved;
     if (f.candidates.empty()) {
       ++out.top1_counts.none;
     } else {
+      // Neighbours are added only beside a chosen top-1, so without one every candidate was retrieved.
       const auto nearest = std::min_element(f.candidates.begin(), f.candidates.end(), [](const auto& a, const auto& b) {
         return a.descriptor_distance2 < b.descriptor_distance2;
       });

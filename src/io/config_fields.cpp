@@ -358,6 +358,9 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(number("verification.lateral_distance",
                      "a chosen candidate estimated this far or farther (m) is reported as lateral, not a revisit",
                      [](Config& c) -> double& { return c.verification.lateral_distance; }));
+  f.push_back(integer<int>("verification.neighbour_frames",
+                           "also verify the top-1 loop's database neighbours within this many frames; 0 = off",
+                           [](Config& c) -> int& { return c.verification.neighbour_frames; }));
   f.push_back(number("verification.offset_decay_start",
                      "score_t is scaled down linearly for an estimated offset beyond this (m) ...",
                      [](Config& c) -> double& { return c.verification.offset_decay_start; }));

@@ -42,6 +42,7 @@ struct CandidateRecord {
   double descriptor_distance2 = 0.0;  ///< squared L2 distance of the global descriptors
   Rejection rejection = Rejection::kFewAssociations;
   double estimated_distance = 0.0;  ///< ‖t(T_match_query)‖, the verified pose's offset (m); 0 unless verified
+  bool retrieved = true;  ///< false: a neighbour of the top-1 (Candidate::retrieved), not in the pairwise protocol
 };
 
 /// Everything measured for one frame.
