@@ -83,6 +83,19 @@ void bindIo(py::module_& m) {
         py::arg("path"), py::arg("label_field") = "label",
         "Reads x, y, z and a label field of a PCD file (ascii, binary or binary_compressed).\n"
         "Returns (points (N, 3) float32, labels (N,) uint32).");
+  m.def("read_pcd_points",
+        [](const std::string& path) {
+          requireFile(path);
+          std::vector<Eigen::Vector3f> points;
+          {
+            py::gil_scoped_release release;
+            points = io::readPcdPoints(path);
+          }
+          return pointsToArray(std::move(points));
+        },
+        py::arg("path"),
+        "Reads x, y, z of a PCD file, with or without a label field (a raw scan for label_scan).\n"
+        "Returns points (N, 3) float32.");
   m.def("read_poses",
         [](const std::string& path) {
           requireFile(path);

@@ -29,8 +29,8 @@ namespace {
 
 /// Relocalizer queries are not thread-safe (a kd-tree database grows on the first query): one lock per object.
 struct PyRelocalizer {
-  PyRelocalizer(const map::Map& m, const Config& config, int num_candidates)
-      : relocalizer(copyMap(m), config, "map", map::RelocalizerOptions{num_candidates}) {}
+  PyRelocalizer(const map::Map& m, const Config& config, int num_candidates, double max_rotation_uncertainty_deg)
+      : relocalizer(copyMap(m), config, "map", map::RelocalizerOptions{num_candidates, max_rotation_uncertainty_deg}) {}
   map::Relocalizer relocalizer;
   std::mutex mutex;
 };
@@ -104,10 +104,12 @@ void bindMap(py::module_& m) {
 
   py::class_<PyRelocalizer>(m, "Relocalizer",
                             "Queries frames against a map: every map frame is eligible, nothing is inserted.")
-      .def(py::init<const map::Map&, const Config&, int>(), py::arg("map"), py::arg("config") = Config{},
+      .def(py::init<const map::Map&, const Config&, int, double>(), py::arg("map"), py::arg("config") = Config{},
            py::arg("num_candidates") = map::RelocalizerOptions{}.num_candidates,
+           py::arg("max_rotation_uncertainty_deg") = map::RelocalizerOptions{}.max_rotation_uncertainty_deg,
            "Raises sgtllc.Error if the map was built with other map fields than config's. num_candidates: "
-           "shortlist per query (0 = config.retrieval.num_candidates).")
+           "shortlist per query (0 = config.retrieval.num_candidates). max_rotation_uncertainty_deg: accept an "
+           "answer only if its rotation is fixed to within about this (0 = no check; below 90).")
       .def("localize",
            [](PyRelocalizer& r, const ArrayLike& points, const ArrayLike& labels, bool drop_nonfinite) {
              LabeledCloud cloud = cloudFromArrays(points, labels, "", drop_nonfinite);

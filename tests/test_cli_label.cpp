@@ -2,6 +2,8 @@
 // `--labels-dir`; bad input gives a message naming the file and a non-zero exit.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -36,6 +38,46 @@ TEST_F(CliLabel, KittiSevenFrameThreeRevisitsFrameZeroFromScansAlone) {
   const CliRun r = run("pair " + k07 + "000003.bin " + k07 + "000000.bin --labeller geometric");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("loop: YES"), std::string::npos) << r.out;
+}
+
+TEST_F(CliLabel, AnUnlabelledPcdGivesTheResultOfItsBinScan) {
+  // A KITTI .bin holds float32 x y z intensity records, which is a binary PCD's data section for fields
+  // x y z intensity: the same scans as PCD files without a label field must give the same pair output.
+  auto asPcd = [&](const std::string& bin, const std::string& name) {
+    std::ifstream in(bin, std::ios::binary);
+    const std::string records((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string n = std::to_string(records.size() / 16);
+    std::ofstream out(path(name), std::ios::binary);
+    out << "VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH " << n
+        << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << n << "\nDATA binary\n"
+        << records;
+    return path(name);
+  };
+  // The output without the two lines naming the inputs and the timing line.
+  auto decision = [](const std::string& out) {
+    std::istringstream lines(out);
+    std::string line, kept;
+    while (std::getline(lines, line)) {
+      if (line.rfind("query ", 0) == 0 || line.rfind("match ", 0) == 0 || line.rfind("time ", 0) == 0) continue;
+      kept += line + "\n";
+    }
+    return kept;
+  };
+  const CliRun bin = run("pair " + k07 + "000003.bin " + k07 + "000000.bin --labeller geometric");
+  const CliRun pcd = run("pair " + asPcd(k07 + "000003.bin", "q.pcd") + " " + asPcd(k07 + "000000.bin", "m.pcd") +
+                         " --labeller geometric");
+  ASSERT_EQ(bin.status, 0) << bin.out;
+  ASSERT_EQ(pcd.status, 0) << pcd.out;
+  EXPECT_NE(pcd.out.find("loop: YES"), std::string::npos) << pcd.out;
+  EXPECT_EQ(decision(pcd.out), decision(bin.out));
+  // Without the geometric labeller such a PCD lacks the label field, and the message says so.
+  const CliRun labelled = run("pair " + path("q.pcd") + " " + path("m.pcd"));
+  EXPECT_EQ(labelled.status, 1);
+  EXPECT_NE(labelled.out.find("no field 'label'"), std::string::npos) << labelled.out;
+  // `sgtllc label` reads it too.
+  const CliRun label = run("label " + path("q.pcd") + " --out " + path("q.label"));
+  EXPECT_EQ(label.status, 0) << label.out;
+  EXPECT_EQ(io::readLabelFile(path("q.label")).size(), io::readKittiBin(k07 + "000003.bin").size());
 }
 
 TEST_F(CliLabel, DistantScansAreNoLoop) {

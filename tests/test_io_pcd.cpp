@@ -38,7 +38,10 @@ TEST_P(PcdIoRoundTrip, ReadsCoordinatesAndLabelSkippingOtherFields) {
   const auto& [data, label] = GetParam();
   const TestCloud cloud = randomCloud(label, 300, 7);
   const std::string p = write("cloud.pcd", encode(cloud, data));
-  expectCloud(sgtllc::io::readPcd(p, label.name), cloud, 1, 6);
+  const sgtllc::LabeledCloud read = sgtllc::io::readPcd(p, label.name);
+  expectCloud(read, cloud, 1, 6);
+  // The points-only read skips the label field like the others and gives the same points.
+  EXPECT_EQ(sgtllc::io::readPcdPoints(p), read.points);
 }
 
 std::string roundTripName(const ::testing::TestParamInfo<PcdIoRoundTrip::ParamType>& info) {
@@ -54,6 +57,27 @@ INSTANTIATE_TEST_SUITE_P(
                                          TestField{"label", 'I', 2, 1}, TestField{"label", 'I', 4, 1},
                                          TestField{"label", 'F', 4, 1}, TestField{"label", 'F', 8, 1})),
     roundTripName);
+
+TEST_F(PcdIo, PointsOnlyReadsAFileWithoutALabelField) {
+  // A raw scan as most drivers write it (x y z intensity): readPcd needs the label field and says so, readPcdPoints
+  // reads it in every encoding; a missing coordinate is still an error naming the file.
+  TestCloud c;
+  c.fields = {{"x", 'F', 4, 1}, {"y", 'F', 4, 1}, {"z", 'F', 4, 1}, {"intensity", 'F', 4, 1}};
+  c.rows = {{1.5, -2, 3, 0.2}, {4, 5.25, -6, 0.9}, {-7, 8, 9.125, 0.5}};
+  const std::vector<Eigen::Vector3f> want = {{1.5f, -2, 3}, {4, 5.25f, -6}, {-7, 8, 9.125f}};
+  for (const std::string data : {"ascii", "binary", "binary_compressed"}) {
+    const std::string p = write("raw_" + data + ".pcd", encode(c, data));
+    EXPECT_EQ(sgtllc::io::readPcdPoints(p), want) << data;
+    EXPECT_THAT([&] { sgtllc::io::readPcd(p); },
+                ThrowsMessage<Error>(AllOf(HasSubstr(p), HasSubstr("no field 'label'")))) << data;
+  }
+  TestCloud flat;
+  flat.fields = {{"x", 'F', 4, 1}, {"y", 'F', 4, 1}, {"intensity", 'F', 4, 1}};
+  flat.rows = {{1, 2, 3}};
+  const std::string p = write("flat.pcd", encode(flat, "binary"));
+  EXPECT_THAT([&] { sgtllc::io::readPcdPoints(p); }, ThrowsMessage<Error>(AllOf(HasSubstr(p), HasSubstr("'z'"))));
+  EXPECT_THAT([&] { sgtllc::io::readPcd(p, ""); }, ThrowsMessage<Error>(HasSubstr("no label field name")));
+}
 
 TEST_F(PcdIo, NegativeIntegerLabelWrapsAndFloatLabelRounds) {
   TestCloud c;

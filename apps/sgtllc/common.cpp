@@ -49,6 +49,13 @@ eval::FrameSource frameSource(const std::string& sequence, const std::string& no
                        : eval::FrameSource::nodeFiles(nodes, config);
 }
 
+std::vector<Eigen::Vector3f> readScanPoints(const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  if (ext == ".pcd") return io::readPcdPoints(path);
+  if (ext == ".bin") return io::readKittiBin(path);
+  throw Error(path + ": --labeller geometric reads KITTI .bin or .pcd scans (got '" + ext + "')");
+}
+
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
@@ -61,8 +68,7 @@ LabeledCloud loadScan(const std::string& path, const std::string& label_path, co
   if (config.labeller.source == LabelSource::kGeometric) {
     // The scan alone: no label file is opened (docs/labeller.md).
     if (!label_path.empty()) throw Error(path + ": --labeller geometric reads no label file; drop the label option");
-    if (ext != ".bin") throw Error(path + ": --labeller geometric reads KITTI .bin scans (got '" + ext + "')");
-    return label::labelCloud(io::readKittiBin(path), label::GeometricLabeller(config.labeller));
+    return label::labelCloud(readScanPoints(path), label::GeometricLabeller(config.labeller));
   }
   if (ext == ".pcd") {
     if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");

@@ -52,8 +52,13 @@ struct FrameNodes {
   double extraction_ms = 0.0;
 };
 
+/// The points of a raw scan for the geometric labeller: a KITTI .bin, or a PCD's x, y, z (a label field, if the
+/// file has one, is skipped). Throws sgtllc::Error naming the file for any other extension.
+std::vector<Eigen::Vector3f> readScanPoints(const std::string& path);
+
 /// Nodes of a KITTI .bin scan (labels from @p label_path or the SemanticKITTI default), a PCD with a label field,
-/// or a node file (.txt: one `x y z label` row per node, label a raw id mapped by config.labels).
+/// or a node file (.txt: one `x y z label` row per node, label a raw id mapped by config.labels). With the geometric
+/// labeller, a .bin or a PCD without labels (readScanPoints).
 FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path, const std::string& label_field,
                           const Config& config);
 

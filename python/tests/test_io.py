@@ -25,6 +25,22 @@ def test_pcd_formats_agree():
         np.testing.assert_allclose(points, clouds[0][0], rtol=1e-6, atol=1e-5)  # ascii: 7 significant digits
         np.testing.assert_array_equal(labels, clouds[0][1])
     assert clouds[0][0].shape[1] == 3 and len(clouds[0][0]) > 100
+    for k, (points, _) in zip(("ascii", "binary", "binary_compressed"), clouds):
+        only = sgtllc.read_pcd_points(str(SOURCE / "data" / "pcd" / f"000052_every100th_{k}.pcd"))
+        np.testing.assert_array_equal(only, points)
+
+
+def test_pcd_without_a_label_field(tmp_path):
+    # x y z intensity records are a KITTI .bin's layout: header + the .bin bytes is a binary PCD without labels.
+    scan = sgtllc.read_kitti_bin(str(MATCH_BIN))
+    n = len(scan)
+    path = tmp_path / "raw.pcd"
+    path.write_bytes(("VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\n"
+                      f"WIDTH {n}\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS {n}\nDATA binary\n").encode()
+                     + scan.astype(np.float32).tobytes())
+    np.testing.assert_array_equal(sgtllc.read_pcd_points(str(path)), scan[:, :3])
+    with pytest.raises(sgtllc.Error, match="no field 'label'"):
+        sgtllc.read_pcd(str(path))
 
 
 def test_poses_and_calib_equal_numpy():
@@ -61,7 +77,8 @@ def test_sequence_dir():
 
 
 def test_missing_file_is_file_not_found(tmp_path):
-    for read in (sgtllc.read_kitti_bin, sgtllc.read_labels, sgtllc.read_pcd, sgtllc.read_poses, sgtllc.read_calib,
+    for read in (sgtllc.read_kitti_bin, sgtllc.read_labels, sgtllc.read_pcd, sgtllc.read_pcd_points,
+                 sgtllc.read_poses, sgtllc.read_calib,
                  sgtllc.read_nodes, sgtllc.Config.from_yaml):
         with pytest.raises((FileNotFoundError, sgtllc.Error), match="nope"):
             read(str(tmp_path / "nope"))

@@ -78,8 +78,16 @@ def test_shortlist_and_tracker():
     m = detector.to_map([f"{i:06d}" for i in range(100)], np.array(poses))
     second_poses, second = session(10, offset=3.0, phase=0.9, seed=99)
     wide, own = sgtllc.Relocalizer(m, config()), sgtllc.Relocalizer(m, config(), num_candidates=0)
-    assert len(wide.localize_nodes(*second[0]).search.candidates) == 50
-    assert len(own.localize_nodes(*second[0]).search.candidates) == config().retrieval.num_candidates
+
+    def retrieved(r):  # the top-1's map neighbours added by verification.neighbour_frames are not counted
+        return sum(c.retrieved for c in r.localize_nodes(*second[0]).search.candidates)
+    assert retrieved(wide) == 50
+    assert retrieved(own) == config().retrieval.num_candidates
+    # The rotation check: 0 turns it off, 90 degrees or more is refused.
+    unchecked = sgtllc.Relocalizer(m, config(), max_rotation_uncertainty_deg=0.0)
+    assert unchecked.localize_nodes(*second[0]).localized >= wide.localize_nodes(*second[0]).localized
+    with pytest.raises(sgtllc.Error, match="max_rotation_uncertainty_deg"):
+        sgtllc.Relocalizer(m, config(), max_rotation_uncertainty_deg=90.0)
     tracker = sgtllc.RelocalizationTracker(wide, window=5)
     for T, (centres, classes) in zip(second_poses, second):
         r, alone = tracker.localize_nodes(centres, classes), wide.localize_nodes(centres, classes)

@@ -83,12 +83,16 @@ LabeledCloud decodeBinary(const char* data, const PcdHeader& h, const XyzLabelFi
                           const std::string& path) {
   LabeledCloud cloud;
   cloud.points.resize(h.points);
-  cloud.labels.resize(h.points);
-  const Column cx = column(*w.x), cy = column(*w.y), cz = column(*w.z), cl = column(*w.label);
+  const Column cx = column(*w.x), cy = column(*w.y), cz = column(*w.z);
   for (size_t i = 0; i < h.points; ++i) {
     cloud.points[i] = Eigen::Vector3f(coordFromBytes(data + cx.offset + i * cx.stride, *w.x),
                                       coordFromBytes(data + cy.offset + i * cy.stride, *w.y),
                                       coordFromBytes(data + cz.offset + i * cz.stride, *w.z));
+  }
+  if (!w.label) return cloud;  // points only (readPcdPoints)
+  cloud.labels.resize(h.points);
+  const Column cl = column(*w.label);
+  for (size_t i = 0; i < h.points; ++i) {
     const std::optional<uint32_t> label = labelFromBytes(data + cl.offset + i * cl.stride, *w.label);
     if (!label) badLabel(path, i, "(" + typeName(*w.label) + ")");
     cloud.labels[i] = *label;
@@ -164,7 +168,7 @@ LabeledCloud readAscii(std::string_view bytes, const PcdHeader& h, const XyzLabe
   LabeledCloud cloud;
   const size_t reserve = std::min(h.points, have);  // a lying POINTS must not allocate
   cloud.points.reserve(reserve);
-  cloud.labels.reserve(reserve);
+  if (w.label) cloud.labels.reserve(reserve);
   size_t pos = h.data_offset;
   size_t line_no = h.data_line;
   while (pos < bytes.size()) {
@@ -179,16 +183,19 @@ LabeledCloud readAscii(std::string_view bytes, const PcdHeader& h, const XyzLabe
     }
     double v[4];
     const PcdField* fs[4] = {w.x, w.y, w.z, w.label};
-    for (int k = 0; k < 4; ++k) {
+    const int fields = w.label ? 4 : 3;  // points only (readPcdPoints): no label
+    for (int k = 0; k < fields; ++k) {
       if (!detail::parseReal(tokens[fs[k]->token], v[k])) {
         throw Error(where + ": field " + quoteContent(fs[k]->name) + ": " + quoteContent(tokens[fs[k]->token]) +
                     " is not a number");
       }
     }
-    const std::optional<uint32_t> label = labelFromReal(v[3]);
-    if (!label) badLabel(path, cloud.points.size(), escapeContent(tokens[w.label->token]));
+    if (w.label) {
+      const std::optional<uint32_t> label = labelFromReal(v[3]);
+      if (!label) badLabel(path, cloud.points.size(), escapeContent(tokens[w.label->token]));
+      cloud.labels.push_back(*label);
+    }
     cloud.points.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-    cloud.labels.push_back(*label);
   }
   if (cloud.points.size() != h.points) {
     throw Error(path + ": truncated ascii data: POINTS is " + std::to_string(h.points) + " but found " +
@@ -199,7 +206,10 @@ LabeledCloud readAscii(std::string_view bytes, const PcdHeader& h, const XyzLabe
 
 }  // namespace
 
-LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
+namespace {
+
+/// Reads a PCD file; an empty @p label_field reads the points only (labels left empty).
+LabeledCloud readPcdFile(const std::string& path, const std::string& label_field) {
   const std::string bytes = detail::readWholeFile(path);
   const PcdHeader header = detail::parsePcdHeader(bytes, path);
   const XyzLabelFields wanted = detail::resolveFields(header, label_field, path);
@@ -210,6 +220,15 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
   }
   throw Error(path + ": unsupported DATA type");  // unreachable: parsePcdHeader rejects the rest
 }
+
+}  // namespace
+
+LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
+  if (label_field.empty()) throw Error(path + ": no label field name given (readPcdPoints reads a PCD without labels)");
+  return readPcdFile(path, label_field);
+}
+
+std::vector<Eigen::Vector3f> readPcdPoints(const std::string& path) { return readPcdFile(path, "").points; }
 
 void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, int num_classes, Overwrite overwrite) {
   detail::checkNodeLabels(path, nodes, num_classes);

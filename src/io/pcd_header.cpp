@@ -158,13 +158,13 @@ std::string typeName(const PcdField& f) { return std::string(1, f.type) + std::t
 
 XyzLabelFields resolveFields(const PcdHeader& h, const std::string& label_field, const std::string& path) {
   XyzLabelFields w{&findField(h, "x", path), &findField(h, "y", path), &findField(h, "z", path),
-                   &findField(h, label_field, path)};
+                   label_field.empty() ? nullptr : &findField(h, label_field, path)};
   for (const PcdField* f : {w.x, w.y, w.z}) {
     if (f->type != 'F' || (f->size != 4 && f->size != 8)) {
       throw Error(path + ": field " + quoteContent(f->name) + " is " + typeName(*f) + "; expected F4 or F8");
     }
   }
-  if (w.label->type == 'F' && w.label->size < 4) {
+  if (w.label && w.label->type == 'F' && w.label->size < 4) {
     throw Error(path + ": label field " + quoteContent(label_field) + " is " + typeName(*w.label) + "; expected F4 or F8");
   }
   return w;

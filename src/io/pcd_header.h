@@ -35,7 +35,7 @@ struct XyzLabelFields {
   const PcdField* x;
   const PcdField* y;
   const PcdField* z;
-  const PcdField* label;
+  const PcdField* label;  ///< null when only the points are read
 };
 
 /// Parses the header at the start of @p text, up to and including the DATA line. Throws sgtllc::Error naming
@@ -43,7 +43,8 @@ struct XyzLabelFields {
 /// POINTS.
 PcdHeader parsePcdHeader(std::string_view text, const std::string& path);
 
-/// Finds x, y, z (F4 or F8) and @p label_field (any type but F1/F2), each with COUNT 1; throws naming @p path.
+/// Finds x, y, z (F4 or F8) and @p label_field (any type but F1/F2; none when empty: label null), each with COUNT 1;
+/// throws naming @p path.
 XyzLabelFields resolveFields(const PcdHeader& h, const std::string& label_field, const std::string& path);
 
 /// "F4", "U2", …

@@ -1,5 +1,6 @@
 /// @file pcd.h
-/// @brief PCD input (ascii, binary and binary_compressed) with a per-point label field, and PCD node export.
+/// @brief PCD input (ascii, binary and binary_compressed), with a per-point label field or points only, and PCD
+///        node export.
 ///
 /// Accepted: PCL's PCD v0.7 header (v0.6 files without VIEWPOINT, and a missing COUNT line meaning COUNT 1, are
 /// accepted too; VERSION is informational). WIDTH × HEIGHT must equal POINTS; organised clouds are read row by
@@ -29,6 +30,11 @@ namespace sgtllc::io {
 /// (`unsupported DATA type 'X'`), a field is missing (`no field 'label' (fields: x y z rgb)`), the data is truncated
 /// (`truncated binary data: N points need B bytes, found F`) or the LZF block is corrupt.
 LabeledCloud readPcd(const std::string& path, const std::string& label_field = "label");
+
+/// Reads fields x, y, z of a PCD file, as readPcd does, and no label (a raw scan for the geometric labeller; any
+/// label field present is skipped like every other field). Throws sgtllc::Error as readPcd, except that no label
+/// field is needed.
+std::vector<Eigen::Vector3f> readPcdPoints(const std::string& path);
 
 /// Writes nodes as an ascii PCD v0.7 with fields x y z (F4) and label (U4, the stable class index 0..C−1 for
 /// C = @p num_classes, Config::numClasses()), readable by PCL as pcl::PointXYZL. Coordinates are written as the
