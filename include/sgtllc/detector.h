@@ -58,7 +58,9 @@ struct FrameResult {
   int num_nodes = 0;                  ///< nodes of this frame
   ExtractionStats extraction;         ///< point bookkeeping (zeros when nodes were given)
   Search search = Search::kSearched;  ///< whether the database was searched; candidates is empty unless kSearched
-  std::vector<Candidate> candidates;  ///< the retrieved candidates in ascending frame index, each verified
+  /// The retrieved candidates, and the top-1's database neighbours that the neighbour check added
+  /// (Candidate::retrieved false), in ascending frame index, each verified.
+  std::vector<Candidate> candidates;
   int best = -1;                      ///< index into candidates of the chosen one (selectCandidate), or −1
   bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
   bool lateral = false;               ///< candidates[best] is estimated ≥ verification.lateral_distance away
