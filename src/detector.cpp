@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "internal/described_cache.h"
+#include "internal/squared_distance.h"
 #include "sgtllc/parallel.h"
 #include "sgtllc/retrieval/retrieval_key.h"
 #include "sgtllc/selection.h"
@@ -126,13 +127,6 @@ void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, 
 
 namespace {
 
-/// Squared L2 distance between a query key and a stored global descriptor of the same dimension.
-float squaredDistance(const std::vector<float>& key, const float* stored) {
-  float d2 = 0.0f;
-  for (size_t k = 0; k < key.size(); ++k) d2 += (key[k] - stored[k]) * (key[k] - stored[k]);
-  return d2;
-}
-
 /// Verifies candidates[first..] against the query; each writes only its own slot. Cache look-ups and inserts stay on
 /// this thread, in candidate order; workers describe the misses.
 void verifyCandidates(const DescribedFrame& query, const FrameDatabase& database, const Config& config,
@@ -190,7 +184,7 @@ void search(const DescribedFrame& query, const std::vector<float>& key, const Fr
       if (listed) continue;
       Candidate added;
       added.frame = g;
-      added.distance2 = squaredDistance(key, database.global(g));
+      added.distance2 = internal::squaredDistance(key.data(), database.global(g), static_cast<int>(key.size()));
       added.retrieved = false;
       result->candidates.push_back(std::move(added));
     }

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <cstdint>
 #include <cstdlib>
 #include <numeric>
 #include <optional>
@@ -19,19 +18,8 @@ class HashGrid {
  public:
   HashGrid(const std::vector<Eigen::Vector3f>& points, double cell)
       : inv_cell_(static_cast<float>(1.0 / cell)), index_(points.size() / 2 + 16) {
-    // Consecutive points mostly share a cell (scan order, and voxels in order of first appearance): the hash table
-    // is probed only when the cell changes.
     std::vector<uint32_t> cell_of(points.size());
-    internal::Cell last{INT32_MIN, INT32_MIN, INT32_MIN};  // no clamped cell coordinate is INT32_MIN
-    uint32_t last_index = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-      const internal::Cell c = internal::cellOf(points[i], inv_cell_);
-      if (!(c == last)) {
-        last = c;
-        last_index = index_.insert(c);
-      }
-      cell_of[i] = last_index;
-    }
+    for (size_t i = 0; i < points.size(); ++i) cell_of[i] = index_.insert(internal::cellOf(points[i], inv_cell_));
     start_.assign(index_.size() + 1, 0);
     for (uint32_t c : cell_of) ++start_[c + 1];
     std::partial_sum(start_.begin(), start_.end(), start_.begin());
@@ -126,7 +114,7 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
 namespace internal {
 
 std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eigen::Vector3f>& points, double radius,
-                                                          int max_neighbors, int min_size, size_t dense_count) {
+                                                          int max_neighbors, int min_size, size_t dense_candidates) {
   if (!(radius > 0.0)) throw std::invalid_argument("fastEuclideanClustering: radius must be positive");
   if (max_neighbors < 1) throw std::invalid_argument("fastEuclideanClustering: max_neighbors must be >= 1");
   const size_t n = points.size();
@@ -139,9 +127,10 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
 
   // Dense neighbourhoods: classes clustered without downsampling (trunk, pole, sign; algorithm §2) can put thousands of
   // points within r of a seed, and every seed would scan them all to keep its nearest max_neighbors. Above
-  // dense_count candidates (kDenseCandidates, fec_search.h) a finer grid is searched ring by ring around the seed, and the search stops once the max_neighbors-th nearest point
-  // found is closer than any point outside the rings searched can be. The kept set, and so the clusters, are
-  // exactly those of the full scan (pairs are ordered by (distance², index)).
+  // dense_candidates (kDenseCandidates, fec_search.h) a finer grid is searched ring by ring around the seed, and the
+  // search stops once the max_neighbors-th nearest point found is closer than any point outside the rings searched
+  // can be. The kept set, and so the clusters, are exactly those of the full scan (pairs are ordered by (distance²,
+  // index)).
   constexpr int kFineDivisions = 16;  // fine cell = r / 16
   constexpr int kMaxFineRing = 5;     // fine rings searched before falling back to the full scan
   const float fine_cell = static_cast<float>(radius / kFineDivisions);
@@ -178,7 +167,7 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
     bool settled = false;
     // Seeds of one block share its density: once the rings fail to settle there (a sparse trunk: the nearest
     // max_neighbors reach beyond them), the next seeds of the block go straight to the full scan.
-    if (candidates > dense_count && !rings_failed) {
+    if (candidates > dense_candidates && !rings_failed) {
       if (!fine) fine.emplace(points, fine_cell);
       const float slack = 1e-3f + 1e-6f * p.cwiseAbs().maxCoeff();
       const internal::Cell fine_cell_of_p = fine->cellOf(p);

@@ -68,11 +68,15 @@ class KeyIndex {
     keys_.reserve(expected_keys);
   }
 
-  /// Index of @p key, inserting it with the next dense index if absent.
+  /// Index of @p key, inserting it with the next dense index if absent. Consecutive scan points (and voxels in
+  /// order of first appearance) mostly share a cell, so the last key is remembered and the table is probed only
+  /// when the key changes.
   uint32_t insert(const Cell& key) {
+    if (key == last_key_) return last_index_;
+    last_key_ = key;
     size_t pos = hash(key) & mask_;
     for (uint32_t slot = slots_[pos]; slot != kMissing; slot = slots_[pos]) {
-      if (keys_[slot] == key) return slot;
+      if (keys_[slot] == key) return last_index_ = slot;
       pos = (pos + 1) & mask_;
     }
     const uint32_t index = size_;
@@ -80,7 +84,7 @@ class KeyIndex {
     keys_.push_back(key);
     ++size_;
     if (2 * static_cast<size_t>(size_) > mask_) grow();  // at most half full
-    return index;
+    return last_index_ = index;
   }
 
   /// Index of @p key, or kMissing.
@@ -123,12 +127,15 @@ class KeyIndex {
   std::vector<Cell> keys_;       // keys_[index]: the cell of each index
   size_t mask_ = 0;
   uint32_t size_ = 0;            // keys_.size()
+  // The key of the last insert and its index. No cell coordinate is INT32_MIN (both cellOf variants stay within
+  // ±2^30), so the first insert always probes.
+  Cell last_key_{INT32_MIN, INT32_MIN, INT32_MIN};
+  uint32_t last_index_ = 0;
 };
 
 /// Builds a VoxelizedCloud one point at a time (voxelDownsample, and node extraction straight from the class split
-/// so that no per-class copy of the points is made). Consecutive scan points often share a voxel, so the last
-/// voxel is remembered and the hash table is probed only when the voxel changes; indices, sums and their order of
-/// accumulation are those of one insert per point.
+/// so that no per-class copy of the points is made): indices, sums and their order of accumulation are those of one
+/// insert per point.
 class VoxelAccumulator {
  public:
   VoxelAccumulator(double leaf, size_t expected_points)
@@ -153,26 +160,19 @@ class VoxelAccumulator {
 
  private:
   void addIn(const Cell& c, const Eigen::Vector3f& p) {
-    if (!(c == last_)) {
-      last_ = c;
-      last_index_ = index_.insert(c);
-      if (last_index_ == voxels_) {
-        out_.sums.emplace_back(Eigen::Vector3d::Zero());
-        out_.counts.push_back(0);
-        ++voxels_;
-      }
+    const uint32_t v = index_.insert(c);
+    if (v == voxels_) {
+      out_.sums.emplace_back(Eigen::Vector3d::Zero());
+      out_.counts.push_back(0);
+      ++voxels_;
     }
-    out_.sums[last_index_] += p.cast<double>();
-    ++out_.counts[last_index_];
+    out_.sums[v] += p.cast<double>();
+    ++out_.counts[v];
   }
 
-  // No cell coordinate is INT32_MIN (both cellOf variants stay within ±2^30), so the first point always probes.
-  static constexpr int32_t kNoCell = INT32_MIN;
   float inv_leaf_;
   KeyIndex index_;
   VoxelizedCloud out_;
-  Cell last_{kNoCell, kNoCell, kNoCell};
-  uint32_t last_index_ = 0;
   uint32_t voxels_ = 0;  // out_.sums.size()
 };
 
