@@ -140,6 +140,9 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
   std::iota(parent.begin(), parent.end(), 0u);
   std::vector<uint8_t> reached(n, 0);
   std::vector<std::pair<float, uint32_t>> near;
+  // The full scan of a block writes every candidate here and advances past those within r: no branch on the
+  // distance, which a LiDAR surface makes unpredictable. Grows to the largest block and is never shrunk.
+  std::vector<std::pair<float, uint32_t>> scanned;
   // Consecutive seeds often share a block (points come in scan order): its cells are looked up once.
   uint32_t cells[27];
   int num_cells = 0;
@@ -193,7 +196,17 @@ std::vector<std::vector<uint32_t>> fastEuclideanClustering(const std::vector<Eig
       }
     }
     if (!settled) {
-      for (int c = 0; c < num_cells; ++c) grid.forEachIn(cells[c], consider);
+      if (scanned.size() < candidates) scanned.resize(candidates);
+      std::pair<float, uint32_t>* out = scanned.data();
+      size_t count = 0;
+      for (int c = 0; c < num_cells; ++c) {
+        grid.forEachIn(cells[c], [&](uint32_t q, const Eigen::Vector3f& point) {
+          const float d2 = (point - p).squaredNorm();
+          out[count] = {d2, q};
+          count += d2 <= r2 ? 1 : 0;
+        });
+      }
+      near.assign(out, out + count);
     }
     if (near.size() > cap) {
       // The radius query returns at most max_neighbors nearest points; ties go to the lower index.

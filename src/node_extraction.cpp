@@ -1,80 +1,16 @@
 #include "sgtllc/node_extraction.h"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstring>
 #include <exception>
 #include <numeric>
-#include <optional>
 #include <string>
 
-#include "internal/voxel_hash.h"
+#include "internal/class_split.h"
 #include "sgtllc/clustering.h"
 #include "sgtllc/parallel.h"
 
 namespace sgtllc {
 namespace {
-
-/// Smallest voxel leaf (m) whose cells take internal::boundedCellOf: a validated config's lower bound.
-constexpr double kMinFastLeaf = 0.001;
-
-/// True if every coordinate of @p points is finite and within ±kMaxCoordinate. On IEEE-754 bits with the sign
-/// cleared, non-negative floats order as their values and Inf and NaN above every finite value, so K − |bits|
-/// wraps to a value with the top bit set exactly when a coordinate is out of bounds. The loop has no branch and
-/// vectorizes; the per-point bound test of the class split is then needed only for the rare scan that fails it.
-bool allWithinBounds(const std::vector<Eigen::Vector3f>& points) {
-  uint32_t bound;
-  std::memcpy(&bound, &kMaxCoordinate, sizeof bound);
-  const float* values = points.empty() ? nullptr : points.front().data();  // Vector3f is three packed floats
-  const size_t count = 3 * points.size();
-  uint32_t out = 0;
-  for (size_t k = 0; k < count; ++k) {
-    uint32_t bits;
-    std::memcpy(&bits, values + k, sizeof bits);
-    out |= bound - (bits & 0x7FFFFFFFu);
-  }
-  return (out >> 31) == 0;
-}
-
-/// Where the class split sends the points of each class: its voxels (on the bounded cell path or the clamped one)
-/// or, for a class clustered without downsampling, its point list.
-struct ClassSinks {
-  std::vector<std::optional<internal::VoxelAccumulator>> voxels;
-  std::array<internal::VoxelAccumulator*, kMaxClasses> bounded{};
-  std::vector<std::vector<Eigen::Vector3f>> points;
-};
-
-/// One pass over the scan: each kept point goes straight into its class's sink, in scan order, so no per-class copy
-/// of the points is made and the voxel sums accumulate in the order that downsampling a class cloud would
-/// (voxelDownsample). kCheck: test each point's bounds (allWithinBounds failed).
-template <bool kCheck>
-void splitByClass(const LabeledCloud& cloud, const LabelMap& labels, ClassSinks& sinks, ExtractionStats& stats) {
-  const Eigen::Vector3f* points = cloud.points.data();
-  const uint32_t* ids = cloud.labels.data();
-  const size_t n = cloud.points.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3f& p = points[i];
-    if (kCheck && !(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate &&
-                    std::abs(p.z()) <= kMaxCoordinate)) {
-      ++(p.allFinite() ? stats.far_points : stats.nonfinite_points);
-      continue;
-    }
-    const int8_t c = labels.classOf(ids[i]);  // an id with a class is known (LabelMap)
-    if (c == kDropped) {
-      if (!labels.isKnown(ids[i])) ++stats.unknown_label_points;
-      continue;
-    }
-    ++stats.class_points[c];
-    if (sinks.bounded[c]) {
-      sinks.bounded[c]->addBounded(p);
-    } else if (sinks.voxels[c]) {
-      sinks.voxels[c]->add(p);
-    } else {
-      sinks.points[c].push_back(p);
-    }
-  }
-}
 
 /// One cluster: its centre and the number of original points in it.
 struct Cluster {
@@ -163,23 +99,11 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   ExtractionStats& stats = result.stats;
   stats.input_points = cloud.points.size();
 
-  const size_t expected = cloud.points.size() / static_cast<size_t>(num_classes_) + 16;
-  ClassSinks sinks;
-  sinks.voxels.resize(static_cast<size_t>(num_classes_));
-  sinks.points.resize(static_cast<size_t>(num_classes_));
-  for (int c = 0; c < num_classes_; ++c) {
-    const double leaf = config_.classes[c].voxel;
-    if (leaf > 0.0) sinks.voxels[c].emplace(leaf, expected);
-    if (leaf >= kMinFastLeaf) sinks.bounded[c] = &*sinks.voxels[c];
-  }
-  if (allWithinBounds(cloud.points)) {
-    splitByClass<false>(cloud, label_map_, sinks, stats);
-  } else {
-    splitByClass<true>(cloud, label_map_, sinks, stats);
-  }
+  internal::ClassSplit split(cloud, label_map_, config_, threads_, stats);
 
-  // Classes are clustered independently (algorithm §2), so they run in parallel, the largest first; each writes only its
-  // own slot and the merge below is in class order, so the nodes never depend on the thread count.
+  // Classes are clustered independently (algorithm §2), so they run in parallel, the largest first, each joining its
+  // ranges of the split first; each writes only its own slot and the merge below is in class order, so the nodes
+  // never depend on the thread count.
   std::vector<std::vector<Cluster>> clusters(static_cast<size_t>(num_classes_));
   std::vector<int> order(static_cast<size_t>(num_classes_));
   std::iota(order.begin(), order.end(), 0);
@@ -190,11 +114,10 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
     const int c = order[k];
     try {
       const ClassClusterConfig& params = config_.classes[c];
-      if (sinks.voxels[c]) {
-        const VoxelizedCloud voxels = std::move(*sinks.voxels[c]).finish();
-        clusters[c] = voxelClusterCentres(voxels, params, config_, &stats.clusters[c]);
+      if (split.voxelized(c)) {
+        clusters[c] = voxelClusterCentres(split.voxels(c), params, config_, &stats.clusters[c]);
       } else {
-        clusters[c] = pointClusterCentres(sinks.points[c], params, config_, &stats.clusters[c]);
+        clusters[c] = pointClusterCentres(split.points(c), params, config_, &stats.clusters[c]);
       }
     } catch (...) {
       errors[c] = std::current_exception();  // an unvalidated ClusterConfig; rethrown on the caller's thread

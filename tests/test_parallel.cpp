@@ -73,4 +73,29 @@ TEST(ParallelFor, NestedCallRunsInOrderOnTheCallingThread) {
   EXPECT_TRUE(waited);
 }
 
+TEST(ParallelFor, KeptWorkersServeManyCallsAndConcurrentCallersEachGetEveryIndex) {
+  // The workers kept between calls (src/parallel.cpp): thousands of calls of different sizes and thread counts in a
+  // row, then two threads calling at once (one gets the kept workers, the other starts its own), each call's items
+  // exactly once.
+  for (int call = 0; call < 3000; ++call) {
+    const int n = 1 + call % 17, threads = 2 + call % 3;
+    std::vector<std::atomic<int>> hits(static_cast<size_t>(n));
+    sgtllc::parallelFor(n, threads, [&](int i) { hits[static_cast<size_t>(i)].fetch_add(1); });
+    for (int i = 0; i < n; ++i) ASSERT_EQ(hits[static_cast<size_t>(i)].load(), 1) << "call " << call;
+  }
+  std::atomic<int> bad{0};
+  auto caller = [&](int seed) {
+    for (int call = 0; call < 500; ++call) {
+      const int n = 2 + (call + seed) % 9;
+      std::vector<std::atomic<int>> hits(static_cast<size_t>(n));
+      sgtllc::parallelFor(n, 2, [&](int i) { hits[static_cast<size_t>(i)].fetch_add(1); });
+      for (int i = 0; i < n; ++i) bad += hits[static_cast<size_t>(i)].load() != 1 ? 1 : 0;
+    }
+  };
+  std::thread a(caller, 0), b(caller, 5);
+  a.join();
+  b.join();
+  EXPECT_EQ(bad.load(), 0);
+}
+
 }  // namespace

@@ -98,6 +98,8 @@ class KeyIndex {
   }
 
   uint32_t size() const { return size_; }
+  /// The key of index @p index (< size()).
+  const Cell& key(uint32_t index) const { return keys_[index]; }
 
  private:
   // splitmix64 finaliser over the packed coordinates: neighbouring cells differ in few low bits, so they need
@@ -148,6 +150,24 @@ class VoxelAccumulator {
   void add(const Eigen::Vector3f& p) { addIn(cellOf(p, inv_leaf_), p); }
   /// A point within ±kMaxCoordinate, for a leaf of at least 1 mm (boundedCellOf): node extraction's hot loop.
   void addBounded(const Eigen::Vector3f& p) { addIn(boundedCellOf(p, inv_leaf_), p); }
+
+  /// Adds the voxels of @p later, which accumulated the points that come after this one's: each voxel's sum gains
+  /// the later sum, and voxels new here follow in their order of first appearance there. The voxels are those of one
+  /// accumulator over all the points; a sum can differ from it only where a double sum of floats rounds (BENCHMARKS.md
+  /// "Time per frame": never on the report sequences).
+  void absorb(const VoxelAccumulator& later) {
+    for (uint32_t v = 0; v < later.voxels_; ++v) {
+      const uint32_t w = index_.insert(later.index_.key(v));
+      if (w == voxels_) {
+        out_.sums.push_back(later.out_.sums[v]);
+        out_.counts.push_back(later.out_.counts[v]);
+        ++voxels_;
+      } else {
+        out_.sums[w] += later.out_.sums[v];
+        out_.counts[w] += later.out_.counts[v];
+      }
+    }
+  }
 
   /// The voxels in order of first appearance, with their centroids.
   VoxelizedCloud finish() && {
