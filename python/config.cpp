@@ -139,6 +139,8 @@ void sections(py::module_& m) {
       .def_readwrite("offset_decay_end", &VerificationConfig::offset_decay_end,
                      "... to 0 at this offset (m); 0 = no decay")
       .def_readwrite("score_formula", &VerificationConfig::score_formula, "score_t formula")
+      .def_readwrite("guided_matching", &VerificationConfig::guided_matching,
+                     "after RANSAC, pair the nodes its pose puts together (score_formula overlap only)")
       .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score_t = score_c, pose from all pairs")
       .def_readwrite("sigma_4", &VerificationConfig::sigma_4, "σ_4: a loop iff the best score_t > σ_4")
       .def_readwrite("seed", &VerificationConfig::seed, "RANSAC random seed");

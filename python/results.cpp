@@ -61,12 +61,13 @@ void bindResults(py::module_& m) {
       .def_readonly("query", &NodeMatch::query, "index into the query nodes")
       .def_readonly("match", &NodeMatch::match, "index into the match nodes")
       .def_readonly("similarity", &NodeMatch::similarity, "node similarity S (algorithm §6)")
+      .def_readonly("guided", &NodeMatch::guided, "paired by guided matching under the pose (algorithm §7.2), not LA")
       .def("__repr__", [](const NodeMatch& a) {
         return "NodeMatch(query=" + std::to_string(a.query) + ", match=" + std::to_string(a.match) + ")";
       });
 
   py::class_<MatchResult>(m, "MatchResult", "Verification of a query frame against one match frame.")
-      .def_readonly("associations", &MatchResult::associations, "LA as NodeMatch objects, in query-node order")
+      .def_readonly("associations", &MatchResult::associations, "LA as NodeMatch objects, in query-node order, then the pairs guided matching added (NodeMatch.guided)")
       .def_readonly("inliers", &MatchResult::inliers, "indices into associations of the RANSAC inliers")
       .def_readonly("score_c", &MatchResult::score_c, "|LA| / M")
       .def_readonly("score_t", &MatchResult::score_t, "loop score; 0 unless rejection is NONE")

@@ -100,6 +100,7 @@ class VerificationConfig:
     min_inlier_fraction: float
     ransac_confidence: float
     score_formula: ScoreFormula
+    guided_matching: bool
     use_ransac: bool
     sigma_4: float
     seed: int
@@ -237,6 +238,7 @@ class NodeMatch:
     query: int
     match: int
     similarity: float
+    guided: bool
 class MatchResult:
     associations: list[NodeMatch]
     inliers: list[int]

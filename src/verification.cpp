@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sgtllc/guided_matching.h"
 #include "sgtllc/ransac.h"
 
 namespace sgtllc {
@@ -38,6 +39,37 @@ double offsetWeight(double offset_m, const VerificationConfig& config) {
   return (end - offset_m) / (end - start);
 }
 
+namespace {
+
+/// Guided matching (algorithm §7.2): the nodes the RANSAC pose pairs become the inliers when they are more than
+/// RANSAC's, and the pose is refitted to them. A pair already in LA keeps its index; the others are appended to
+/// the associations, marked NodeMatch::guided.
+void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc,
+                      MatchResult* result) {
+  GuidedMatch guided = guidedMatching(query.graph, match.graph, result->T_match_query, vc.inlier_threshold,
+                                      result->inliers.size());
+  if (guided.pairs.empty()) return;
+  // LA holds at most one pair per query node (associateNodes), so a query node finds its LA pair directly.
+  std::vector<int> in_la(static_cast<size_t>(query.numNodes()), -1);
+  const int la = static_cast<int>(result->associations.size());
+  for (int k = 0; k < la; ++k) in_la[result->associations[k].query] = k;
+  result->inliers.clear();
+  for (NodeMatch& pair : guided.pairs) {
+    const int k = in_la[pair.query];
+    if (k >= 0 && result->associations[k].match == pair.match) {
+      result->inliers.push_back(k);
+    } else {
+      pair.guided = true;
+      result->inliers.push_back(static_cast<int>(result->associations.size()));
+      result->associations.push_back(pair);
+    }
+  }
+  std::sort(result->inliers.begin(), result->inliers.end());
+  result->T_match_query = guided.T_match_query;
+}
+
+}  // namespace
+
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
   const VerificationConfig& vc = config.verification;
   MatchResult result;
@@ -70,7 +102,15 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   }
   result.rejection = Rejection::kNone;
   result.inliers = ransac.inliers;
-  const double n_in = static_cast<double>(ransac.inliers.size());
+  std::vector<Eigen::Vector3d> src_in, dst_in;
+  for (int k : ransac.inliers) {
+    src_in.push_back(source[k]);
+    dst_in.push_back(target[k]);
+  }
+  result.T_match_query = fitRigid(src_in, dst_in);
+  if (vc.guided_matching && vc.score_formula == ScoreFormula::kOverlap) addGuidedInliers(query, match, vc, &result);
+
+  const double n_in = static_cast<double>(result.inliers.size());
   switch (vc.score_formula) {
     case ScoreFormula::kPaper:
       result.score_t = n_in / la;
@@ -82,13 +122,6 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
       result.score_t = n_in / std::max(query.numNodes(), match.numNodes());
       break;
   }
-
-  std::vector<Eigen::Vector3d> src_in, dst_in;
-  for (int k : ransac.inliers) {
-    src_in.push_back(source[k]);
-    dst_in.push_back(target[k]);
-  }
-  result.T_match_query = fitRigid(src_in, dst_in);
   result.score_t *= offsetWeight(result.T_match_query.topRightCorner<3, 1>().norm(), vc);
   return result;
 }

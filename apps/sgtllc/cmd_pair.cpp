@@ -1,4 +1,5 @@
 // `sgtllc pair QUERY MATCH`: is QUERY a revisit of MATCH, and with which pose?
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -83,6 +84,12 @@ void exportGraphs(const std::string& dir, const ExportPaths& p, const PairResult
   io::writeGraphPly(qm, both, edges, num_classes, overwrite);
 }
 
+/// Pairs of MatchResult::associations that guided matching added (algorithm §7.2), not LA.
+size_t numGuided(const MatchResult& m) {
+  return static_cast<size_t>(std::count_if(m.associations.begin(), m.associations.end(),
+                                           [](const NodeMatch& a) { return a.guided; }));
+}
+
 std::string inputSummary(const FrameNodes& f) {
   const std::string nodes = std::to_string(f.nodes.size()) + " nodes";
   return f.from_node_file ? "node file, " + nodes : std::to_string(f.points) + " points, " + nodes;
@@ -96,7 +103,9 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   std::cout << "loop: " << (r.is_loop ? "YES" : "no") << "   score_t " << fixed(m.score_t, 3)
             << (r.is_loop ? " > " : " <= ") << "sigma_4 " << config.verification.sigma_4 << "   score_c "
             << fixed(m.score_c, 3) << "\n";
-  std::cout << "associations " << m.associations.size() << ", inliers " << m.inliers.size();
+  const size_t guided = numGuided(m);
+  std::cout << "associations " << m.associations.size() - guided << ", inliers " << m.inliers.size();
+  if (guided > 0) std::cout << " (" << guided << " paired by the pose: guided matching)";
   if (m.rejection != Rejection::kNone) std::cout << "   (rejected: " << rejectionName(m.rejection) << ")";
   std::cout << "\n";
   const double offset = m.T_match_query.topRightCorner<3, 1>().norm();
@@ -135,7 +144,8 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                        {"match_node", a.match},
                        {"class", config.labels.className(r.query_nodes[a.query].label)},
                        {"similarity", a.similarity},
-                       {"inlier", static_cast<bool>(inlier[k])}});
+                       {"inlier", static_cast<bool>(inlier[k])},
+                       {"guided", a.guided}});
   }
   Json refinement = nullptr;
   if (const auto& f = r.refinement) {
@@ -166,7 +176,8 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                                                              config.verification)},
                               {"nodes_query", r.query_nodes.size()},
                               {"nodes_match", r.match_nodes.size()},
-                              {"associations", m.associations.size()},
+                              {"associations", m.associations.size() - numGuided(m)},
+                              {"guided_pairs", numGuided(m)},
                               {"inliers", m.inliers.size()},
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},

@@ -14,6 +14,8 @@ struct NodeMatch {
   int query = 0;
   int match = 0;
   double similarity = 0.0;
+  /// Paired by guided matching under the verified pose (algorithm §7.2), not by the descriptors; similarity 0.
+  bool guided = false;
 };
 
 /// Similarity S[i][j] of query node i and match node j (algorithm §6): over the slots valid in the query, the share

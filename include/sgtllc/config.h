@@ -252,6 +252,12 @@ struct VerificationConfig {
   /// σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) [0, 1] (every score_t
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
+  /// Guided matching (guided_matching.h, algorithm §7.2): after RANSAC, the nodes its pose pairs (mutual nearest
+  /// same-class nodes closer than inlier_threshold) replace its inliers when they are more, and the pose is
+  /// refitted to them. The descriptors associate each node with one candidate only, and where several nodes of a
+  /// class look alike (poles along a street) they pick wrong ones that the pose would have paired. Only with
+  /// score_formula overlap, which divides by the graph size: the other formulas count inliers among LA.
+  bool guided_matching = true;
   /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
   /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: issue 13 item 3; tuned on the urban11

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import sgtllc
-from conftest import QUERY_BIN
+from conftest import MATCH_BIN, QUERY_BIN, cli_json
 
 
 def test_label_scan_real_scan():
@@ -38,3 +38,28 @@ def test_labeller_config_key():
     c.labeller.ground.tolerance = 0.0
     with pytest.raises(sgtllc.ConfigError):
         c.validate()
+
+
+def geometric_ids(points):
+    """SemanticKITTI raw ids of the geometric labeller's classes (building … traffic-sign), ground as road (40)."""
+    classes, ground = sgtllc.label_scan(points)
+    ids = np.zeros(len(classes), dtype=np.uint32)
+    kept = classes >= 0
+    ids[kept] = np.array([50, 51, 70, 71, 72, 80, 81], dtype=np.uint32)[classes[kept]]
+    ids[(~kept) & (ground == 1)] = 40
+    return ids
+
+
+def test_revisit_from_scans_alone_equals_the_cli(cli):
+    # `sgtllc pair --labeller geometric` is label_scan's classes as SemanticKITTI ids into compare_pair; guided
+    # matching pairs 3 poles the descriptors confused, which makes 4501 -> 52 a loop (docs/algorithm.md §7.2).
+    expected = cli_json(cli, "pair", QUERY_BIN, MATCH_BIN, "--labeller", "geometric")
+    q, m = sgtllc.read_kitti_bin(str(QUERY_BIN)), sgtllc.read_kitti_bin(str(MATCH_BIN))
+    r = sgtllc.compare_pair(q, geometric_ids(q), m, geometric_ids(m))
+    assert r.is_loop and expected["loop"]
+    assert r.score_t == pytest.approx(expected["score_t"], abs=1e-12)
+    guided = [a for a in r.match.associations if a.guided]
+    assert len(guided) == expected["guided_pairs"] > 0
+    assert all(a.similarity == 0.0 for a in guided)
+    assert sgtllc.Config().verification.guided_matching
+    np.testing.assert_allclose(r.T_match_query, np.array(expected["T_match_query"]), rtol=0, atol=1e-6)

@@ -350,6 +350,9 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                                    {{"paper", ScoreFormula::kPaper},
                                     {"legacy", ScoreFormula::kLegacy},
                                     {"overlap", ScoreFormula::kOverlap}}));
+  f.push_back(boolean("verification.guided_matching",
+                      "after RANSAC, pair the nodes its pose puts together (score_formula overlap only)",
+                      [](Config& c) -> bool& { return c.verification.guided_matching; }));
   f.push_back(number("verification.sigma_4", "σ_4: loop iff best score_t > σ_4 (0.1 for MulRan/MCD)",
                      [](Config& c) -> double& { return c.verification.sigma_4; }));
   f.push_back(number("verification.select_margin",
