@@ -68,6 +68,22 @@ void bindLabel(py::module_& m) {
       "Geometric labeller (docs/labeller.md): (points (N, 3) or (N, 4), intensity ignored) → (classes (N,) int8:\n"
       "0..6 as the stable classes, never 3 (trunk is merged into pole 5), −1 dropped; ground (N,) uint8).\n"
       "NaN/Inf points are dropped, never an error.");
+  m.def(
+      "label_scan_ids",
+      [](const py::handle& points, const LabellerConfig& config) {
+        const std::vector<Eigen::Vector3f> pts = pointsFromArray(points, "points", true);
+        std::vector<uint32_t> ids;
+        {
+          py::gil_scoped_release release;
+          ids = label::semanticKittiIds(label::GeometricLabeller(config).classify(pts));
+        }
+        const auto n = static_cast<py::ssize_t>(ids.size());
+        return vectorToArray(std::move(ids), {n});
+      },
+      py::arg("points"), py::arg("config") = LabellerConfig{},
+      "label_scan's classes as SemanticKITTI raw ids ((N,) uint32: building 50, fence 51, vegetation 70, pole 80,\n"
+      "ground 40, dropped 0), the labels LoopDetector.process and compare_pair take: what `--labeller geometric`\n"
+      "feeds the pipeline (docs/labeller.md).");
 }
 
 }  // namespace sgtllc::python

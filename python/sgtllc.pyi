@@ -345,6 +345,7 @@ class RelocalizationTracker:
 
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
+def label_scan_ids(points: ArrayLike, config: LabellerConfig = ...) -> np.ndarray: ...  # (N,) uint32 SemanticKITTI ids
 def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32
 def read_labels(path: str) -> np.ndarray: ...  # (N,) uint32
 def default_label_path(bin_path: str) -> str: ...

@@ -40,22 +40,24 @@ def test_labeller_config_key():
         c.validate()
 
 
-def geometric_ids(points):
-    """SemanticKITTI raw ids of the geometric labeller's classes (building … traffic-sign), ground as road (40)."""
-    classes, ground = sgtllc.label_scan(points)
-    ids = np.zeros(len(classes), dtype=np.uint32)
+def test_label_scan_ids_are_the_classes_as_semantickitti_ids():
+    scan = sgtllc.read_kitti_bin(str(QUERY_BIN))
+    classes, ground = sgtllc.label_scan(scan)
+    expected = np.zeros(len(classes), dtype=np.uint32)
     kept = classes >= 0
-    ids[kept] = np.array([50, 51, 70, 71, 72, 80, 81], dtype=np.uint32)[classes[kept]]
-    ids[(~kept) & (ground == 1)] = 40
-    return ids
+    expected[kept] = np.array([50, 51, 70, 71, 72, 80, 81], dtype=np.uint32)[classes[kept]]
+    expected[(~kept) & (ground == 1)] = 40
+    ids = sgtllc.label_scan_ids(scan)
+    assert ids.dtype == np.uint32
+    np.testing.assert_array_equal(ids, expected)
 
 
 def test_revisit_from_scans_alone_equals_the_cli(cli):
-    # `sgtllc pair --labeller geometric` is label_scan's classes as SemanticKITTI ids into compare_pair; guided
+    # `sgtllc pair --labeller geometric` is label_scan_ids into compare_pair; guided
     # matching pairs 3 poles the descriptors confused, which makes 4501 -> 52 a loop (docs/algorithm.md §7.2).
     expected = cli_json(cli, "pair", QUERY_BIN, MATCH_BIN, "--labeller", "geometric")
     q, m = sgtllc.read_kitti_bin(str(QUERY_BIN)), sgtllc.read_kitti_bin(str(MATCH_BIN))
-    r = sgtllc.compare_pair(q, geometric_ids(q), m, geometric_ids(m))
+    r = sgtllc.compare_pair(q, sgtllc.label_scan_ids(q), m, sgtllc.label_scan_ids(m))
     assert r.is_loop and expected["loop"]
     assert r.score_t == pytest.approx(expected["score_t"], abs=1e-12)
     guided = [a for a in r.match.associations if a.guided]
