@@ -139,6 +139,8 @@ void sections(py::module_& m) {
       .def_readwrite("offset_decay_end", &VerificationConfig::offset_decay_end,
                      "... to 0 at this offset (m); 0 = no decay")
       .def_readwrite("score_formula", &VerificationConfig::score_formula, "score_t formula")
+      .def_readwrite("max_tilt_deg", &VerificationConfig::max_tilt_deg,
+                     "RANSAC skips a rotation tilting the up axis more than this (deg); 180 = no check")
       .def_readwrite("guided_matching", &VerificationConfig::guided_matching,
                      "after RANSAC, pair the nodes its pose puts together (score_formula overlap only)")
       .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score_t = score_c, pose from all pairs")

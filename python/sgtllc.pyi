@@ -101,6 +101,7 @@ class VerificationConfig:
     ransac_confidence: float
     score_formula: ScoreFormula
     guided_matching: bool
+    max_tilt_deg: float
     use_ransac: bool
     sigma_4: float
     seed: int

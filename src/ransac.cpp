@@ -115,11 +115,14 @@ RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::
   int best_count = 0;
   int needed = params.iterations;
   const bool check_sample = params.sample_size <= 3;
+  // cos of the angle between R·z and z is R(2, 2); the bound is compared in that form, with no acos per hypothesis.
+  const double min_up_cos = params.max_tilt >= M_PI ? -2.0 : std::cos(params.max_tilt);
   for (int it = 0; it < std::min(params.iterations, needed) && best_count < n; ++it) {
     drawSample(rng, n, params, &sample, &scratch);
     if (check_sample && !distancesAgree(source, target, sample, params.inlier_threshold)) continue;
     const Eigen::Matrix4d T = kabsch(source, target, sample);
     const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
+    if (R(2, 2) < min_up_cos) continue;
     const Eigen::Vector3d t = T.topRightCorner<3, 1>();
     int count = 0;
     for (int k = 0; k < n; ++k) count += ((R * source[k] + t - target[k]).squaredNorm() < thr2);

@@ -1,6 +1,7 @@
 #include "sgtllc/verification.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sgtllc/guided_matching.h"
 #include "sgtllc/ransac.h"
@@ -28,6 +29,7 @@ RansacParams ransacParams(const VerificationConfig& config) {
   p.min_inliers = config.min_inliers;
   p.min_inlier_fraction = config.min_inlier_fraction;
   p.confidence = config.ransac_confidence;
+  p.max_tilt = config.max_tilt_deg * M_PI / 180.0;
   p.seed = config.seed;
   return p;
 }

@@ -85,6 +85,7 @@ std::vector<Range> ranges() {
   r.push_back({"verification.min_inliers", {"1", "2000"}, {"0", "2001"}, "[1, 2000]"});
   r.push_back({"verification.min_inlier_fraction", {"0", "1"}, {"-0.01", "1.5"}, "[0, 1]"});
   r.push_back({"verification.ransac_confidence", {"1e-09", "1"}, {"0", "1.001"}, "(0, 1]"});
+  r.push_back({"verification.max_tilt_deg", {"0", "180"}, {"-1", "180.5"}, "[0, 180]"});
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
   r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
   r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
@@ -211,8 +212,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 33 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 33 + 18 + 15 + 26);
+  // 8 classes incl. vehicle, 34 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 34 + 18 + 15 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

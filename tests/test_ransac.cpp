@@ -220,4 +220,37 @@ TEST(Ransac, MinimalSampleCheckSkipsOnlySamplesThatCannotBeAllInliers) {
   }
 }
 
+TEST(Ransac, MaxTiltSkipsUpsideDownFitsOfFlatScenes) {
+  // Objects on flat ground (z = 0) and their mirror image across the x axis, (x, −y, 0): the rotation of 180° about x
+  // maps every point exactly onto its partner, so without the check RANSAC accepts that upside-down fit with all
+  // inliers; with max_tilt 30° no rotation fits them (a mirror image is no rigid motion within the plane).
+  const Points src = {{3, 1, 0}, {7, -2, 0}, {-4, 5, 0}, {0, -6, 0}, {9, 8, 0}};
+  Points mirrored;
+  for (const auto& p : src) mirrored.emplace_back(p.x(), -p.y(), 0.0);
+  sgtllc::RansacParams params;
+  params.sample_size = 3;
+  params.min_inliers = 3;
+  // Distinct pairs: a sample that repeats a pair fits two points only, and its free turn about their line could
+  // land within the bound by chance.
+  params.with_replacement = false;
+  const auto off = sgtllc::ransacRigid(src, mirrored, params);
+  ASSERT_TRUE(off.accepted);
+  EXPECT_EQ(off.inliers.size(), src.size());
+  EXPECT_NEAR(off.T_target_source(2, 2), -1.0, 1e-9);  // z turned upside down
+  params.max_tilt = 30.0 * M_PI / 180.0;
+  EXPECT_FALSE(sgtllc::ransacRigid(src, mirrored, params).accepted);
+  // An upright motion tilted by 29° is kept and one by 31° is not: the bound is on the angle between R·z and z.
+  for (const double tilt_deg : {29.0, 31.0}) {
+    const Eigen::Matrix3d R = (Eigen::AngleAxisd(1.2, Eigen::Vector3d::UnitZ()) *
+                               Eigen::AngleAxisd(tilt_deg * M_PI / 180.0, Eigen::Vector3d(1, 1, 0).normalized()))
+                                  .toRotationMatrix();
+    const Eigen::Matrix4d T = makeT(R, Eigen::Vector3d(2, -1, 0.5));
+    Points dst;
+    for (const auto& p : src) dst.push_back(apply(T, p));
+    const auto r = sgtllc::ransacRigid(src, dst, params);
+    EXPECT_EQ(r.accepted, tilt_deg < 30.0) << tilt_deg;
+    if (r.accepted) EXPECT_LT((r.T_target_source - T).cwiseAbs().maxCoeff(), 1e-9);
+  }
+}
+
 }  // namespace

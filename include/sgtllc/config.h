@@ -252,6 +252,12 @@ struct VerificationConfig {
   /// σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) [0, 1] (every score_t
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
+  /// Largest tilt (°) between the up axes of a loop's two scans: RANSAC skips a hypothesis whose rotation turns z
+  /// by more (algorithm §7.2) [0, 180]; 180 = no check. A ground vehicle is upright at both visits (KITTI's
+  /// revisits differ by a few degrees at most); objects on flat ground all lie near one plane, which a rotation of
+  /// 180° about a horizontal axis maps onto a mirror image of itself, and such upside-down fits were the false loops
+  /// of small graphs. [deviation: the paper and the code fit any rotation; BENCHMARKS.md "Upright check"]
+  double max_tilt_deg = 30.0;
   /// Guided matching (guided_matching.h, algorithm §7.2): after RANSAC, the nodes its pose pairs (mutual nearest
   /// same-class nodes closer than inlier_threshold) replace its inliers when they are more, and the pose is
   /// refitted to them. The descriptors associate each node with one candidate only, and where several nodes of a

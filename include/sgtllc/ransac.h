@@ -23,6 +23,9 @@ struct RansacParams {
   /// Stop once a sample of only inliers of the best hypothesis has been drawn with this probability (adaptive
   /// RANSAC); 1 = always run every iteration, as the authors' code.
   double confidence = 0.999;
+  /// A hypothesis whose rotation turns the z axis by more than this (rad) is skipped: scans of a ground vehicle are
+  /// upright at both visits. π = no check.
+  double max_tilt = 3.14159265358979323846;
   uint32_t seed = 42;             ///< std::mt19937 seed
 };
 
@@ -33,7 +36,8 @@ struct RansacResult {
 };
 
 /// RANSAC over correspondences (source_k, target_k) (algorithm §7.2): keeps the hypothesis with strictly the most
-/// inliers (so the first one found wins a tie); stops after `iterations`, once every pair is an inlier, or when
+/// inliers (so the first one found wins a tie) among those within `max_tilt`; stops after `iterations`, once every
+/// pair is an inlier, or when
 /// the adaptive bound for `confidence` is reached. Deterministic for a given seed on every platform (no std::uniform_int_distribution).
 RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
                          const RansacParams& params);

@@ -350,6 +350,9 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                                    {{"paper", ScoreFormula::kPaper},
                                     {"legacy", ScoreFormula::kLegacy},
                                     {"overlap", ScoreFormula::kOverlap}}));
+  f.push_back(number("verification.max_tilt_deg",
+                     "RANSAC skips a rotation that tilts the up axis more than this (deg); 180 = no check",
+                     [](Config& c) -> double& { return c.verification.max_tilt_deg; }));
   f.push_back(boolean("verification.guided_matching",
                       "after RANSAC, pair the nodes its pose puts together (score_formula overlap only)",
                       [](Config& c) -> bool& { return c.verification.guided_matching; }));
