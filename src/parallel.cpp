@@ -7,6 +7,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <mutex>
 #include <system_error>
 #include <thread>
@@ -46,8 +47,10 @@ bool spinUntil(Ready&& ready) {
 /// Workers kept from one call to the next. Starting and joining threads per call cost ~0.1 ms on the project's
 /// 2-core VM, and the online detector makes three calls per frame (BENCHMARKS.md "Time per frame"). An idle worker
 /// blocks on a condition variable: it never spins (libgomp's spinning workers took a third of `sgtllc eval`'s CPU).
-/// One call uses the team at a time; a concurrent call from another thread, or a call in a forked child (which has
-/// no workers), starts its own threads instead.
+/// A worker takes part in a call only if it joins while the call is open; the caller closes the call once every
+/// item is handed out and then waits for the workers that joined, never for one the scheduler has not run yet (on a
+/// busy machine that wait was a whole time slice, ~4 ms, per call). One call uses the team at a time; a concurrent
+/// call from another thread, or a call in a forked child (which has no workers), starts its own threads instead.
 class Team {
  public:
   static Team& instance() {
@@ -59,7 +62,6 @@ class Team {
   bool run(int n, int helpers, const std::function<void(int)>& f) {
     std::unique_lock<std::mutex> call(call_mutex_, std::try_to_lock);
     if (!call.owns_lock() || getpid() != pid_) return false;
-    std::atomic<int> next{0};
     {
       std::lock_guard<std::mutex> lock(mutex_);
       try {
@@ -71,17 +73,21 @@ class Team {
         // No thread to be had (a process limit): the workers there are and this thread do every item.
       }
       job_ = &f;
-      next_ = &next;
       n_ = n;
+      next_.store(0);
       wanted_ = std::min(helpers, static_cast<int>(workers_.size()));
-      pending_.store(wanted_);
+      open_ = true;
       generation_.fetch_add(1);
     }
     wake_.notify_all();
-    runItems(next, n, f);
-    if (!spinUntil([this] { return pending_.load() == 0; })) {
+    runItems(next_, n, f);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      open_ = false;  // every item is handed out: a worker that has not joined by now stays out of this call
+    }
+    if (!spinUntil([this] { return joined_.load() == 0; })) {
       std::unique_lock<std::mutex> lock(mutex_);
-      done_.wait(lock, [this] { return pending_.load() == 0; });
+      done_.wait(lock, [this] { return joined_.load() == 0; });
     }
     return true;
   }
@@ -93,7 +99,6 @@ class Team {
     uint64_t seen = 0;
     for (;;) {
       const std::function<void(int)>* job;
-      std::atomic<int>* next;
       int n;
       const auto called = [&] { return generation_.load() != seen; };
       if (!spinUntil(called)) {
@@ -103,13 +108,13 @@ class Team {
       {
         std::lock_guard<std::mutex> lock(mutex_);  // the call's fields were written under it
         seen = generation_.load();
-        if (id >= wanted_) continue;  // not needed for this call (fewer items than workers)
+        if (!open_ || id >= wanted_) continue;  // too late for this call, or not needed (fewer items than workers)
+        joined_.fetch_add(1);
         job = job_;
-        next = next_;
         n = n_;
       }
-      runItems(*next, n, *job);
-      if (pending_.fetch_sub(1) == 1) {
+      runItems(next_, n, *job);
+      if (joined_.fetch_sub(1) == 1) {
         std::lock_guard<std::mutex> lock(mutex_);  // so a caller between its check and its wait is not missed
         done_.notify_one();
       }
@@ -121,10 +126,11 @@ class Team {
   std::condition_variable wake_, done_;
   std::vector<std::thread> workers_;
   const std::function<void(int)>* job_ = nullptr;
-  std::atomic<int>* next_ = nullptr;
   int n_ = 0;
-  int wanted_ = 0;    // workers 0 … wanted_−1 take part in the current call
-  std::atomic<int> pending_{0};         // of those, the ones not finished yet
+  std::atomic<int> next_{0};   // the current call's next item
+  int wanted_ = 0;             // workers 0 … wanted_−1 may join the current call
+  bool open_ = false;          // workers may still join the current call
+  std::atomic<int> joined_{0};  // workers that joined the current call and are not done
   std::atomic<uint64_t> generation_{0};  // calls so far; changed under mutex_
   const pid_t pid_;
 };
@@ -150,9 +156,26 @@ void parallelFor(int n, int threads, const std::function<void(int)>& f) {
     for (int i = 0; i < n; ++i) f(i);
     return;
   }
+  // An exception must not leave a team's thread (std::terminate) or unwind the caller while the workers still use
+  // this call's state: it is caught per item, and the one of the lowest index is rethrown once every item is done.
+  std::mutex failure_mutex;
+  int failed_index = n;
+  std::exception_ptr failure;
+  const std::function<void(int)> guarded = [&](int i) {
+    try {
+      f(i);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (i < failed_index) {
+        failed_index = i;
+        failure = std::current_exception();
+      }
+    }
+  };
   // Never more threads than items (15 candidates need no larger team).
   const int team = std::min(threads, n);
-  if (!Team::instance().run(n, team - 1, f)) runOwnThreads(n, team, f);
+  if (!Team::instance().run(n, team - 1, guarded)) runOwnThreads(n, team, guarded);
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace sgtllc

@@ -1,9 +1,11 @@
 // parallelFor (include/sgtllc/parallel.h): every index exactly once at any thread count, no more threads than
-// asked for, and a nested call run in order on the calling thread.
+// asked for, a nested call run in order on the calling thread, and an exception of an item rethrown on the caller.
 #include <atomic>
 #include <chrono>
 #include <mutex>
 #include <set>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -96,6 +98,35 @@ TEST(ParallelFor, KeptWorkersServeManyCallsAndConcurrentCallersEachGetEveryIndex
   a.join();
   b.join();
   EXPECT_EQ(bad.load(), 0);
+}
+
+TEST(ParallelFor, AnExceptionReachesTheCallerAfterEveryItem) {
+  // Items 3 and 7 throw: the caller gets item 3's exception (the lowest index), and with a team every other item has
+  // run by then, so nothing still uses the call's state; the team then serves the next call.
+  for (int threads : {2, 3}) {
+    std::vector<std::atomic<int>> hits(10);
+    try {
+      sgtllc::parallelFor(10, threads, [&](int i) {
+        hits[static_cast<size_t>(i)].fetch_add(1);
+        if (i == 3 || i == 7) throw std::runtime_error("item " + std::to_string(i));
+      });
+      ADD_FAILURE() << "no exception at " << threads << " threads";
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "item 3");
+    }
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(hits[static_cast<size_t>(i)].load(), 1) << threads << " threads, item " << i;
+    std::atomic<int> after{0};
+    sgtllc::parallelFor(100, threads, [&](int) { after.fetch_add(1); });
+    EXPECT_EQ(after.load(), 100);
+  }
+  // One thread: in order, so item 3 throws and the items after it do not run.
+  std::vector<int> ran;
+  EXPECT_THROW(sgtllc::parallelFor(10, 1, [&](int i) {
+                 ran.push_back(i);
+                 if (i == 3) throw std::runtime_error("item 3");
+               }),
+               std::runtime_error);
+  EXPECT_EQ(ran, (std::vector<int>{0, 1, 2, 3}));
 }
 
 }  // namespace
