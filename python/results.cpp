@@ -68,7 +68,7 @@ void bindResults(py::module_& m) {
 
   py::class_<MatchResult>(m, "MatchResult", "Verification of a query frame against one match frame.")
       .def_readonly("associations", &MatchResult::associations, "LA as NodeMatch objects, in query-node order, then the pairs guided matching added (NodeMatch.guided)")
-      .def_readonly("inliers", &MatchResult::inliers, "indices into associations of the RANSAC inliers")
+      .def_readonly("inliers", &MatchResult::inliers, "indices into associations of the inliers (RANSAC's, or guided matching's when more)")
       .def_readonly("score_c", &MatchResult::score_c, "|LA| / M")
       .def_readonly("score_t", &MatchResult::score_t, "loop score; 0 unless rejection is NONE")
       .def_readonly("rejection", &MatchResult::rejection, "why score_t is 0, or NONE")

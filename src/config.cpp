@@ -145,7 +145,7 @@ void Config::validate() const {
   checkInt("verification.min_inliers", v.min_inliers, 1, kMaxGraphNodes);
   checkReal("verification.min_inlier_fraction", v.min_inlier_fraction, {0.0}, {1.0});
   checkReal("verification.ransac_confidence", v.ransac_confidence, {0.0, false}, {1.0});
-  checkReal("verification.max_tilt_deg", v.max_tilt_deg, {0.0}, {180.0});
+  checkReal("verification.max_tilt_deg", v.max_tilt_deg, {1.0}, {180.0});
   checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
   checkReal("verification.select_margin", v.select_margin, {0.0}, {1.0});
   checkReal("verification.lateral_distance", v.lateral_distance, {0.0, false}, {1000.0});

@@ -41,7 +41,7 @@ std::vector<NodeMatch> pairsUnderPose(const SemanticGraph& query, const Semantic
 }
 
 GuidedMatch guidedMatching(const SemanticGraph& query, const SemanticGraph& match, const Eigen::Matrix4d& T_match_query,
-                           double radius, size_t more_than, int rounds) {
+                           double radius, size_t more_than, double max_tilt, int rounds) {
   GuidedMatch best;
   Eigen::Matrix4d T = T_match_query;
   for (int round = 0; round < rounds; ++round) {
@@ -53,6 +53,7 @@ GuidedMatch guidedMatching(const SemanticGraph& query, const SemanticGraph& matc
       target.push_back(match.nodes[p.match].centre);
     }
     T = fitRigid(source, target);
+    if (!isUpright(T, max_tilt)) break;  // nearly collinear centres leave the turn about their line free
     best.pairs = std::move(pairs);
     best.T_match_query = T;
   }

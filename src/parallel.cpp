@@ -46,7 +46,8 @@ bool spinUntil(Ready&& ready) {
 
 /// Workers kept from one call to the next. Starting and joining threads per call cost ~0.1 ms on the project's
 /// 2-core VM, and the online detector makes three calls per frame (BENCHMARKS.md "Time per frame"). An idle worker
-/// blocks on a condition variable: it never spins (libgomp's spinning workers took a third of `sgtllc eval`'s CPU).
+/// polls for at most kSpin, yielding the core, then blocks on a condition variable: it never spins between frames
+/// (libgomp's spinning workers took a third of `sgtllc eval`'s CPU).
 /// A worker takes part in a call only if it joins while the call is open; the caller closes the call once every
 /// item is handed out and then waits for the workers that joined, never for one the scheduler has not run yet (on a
 /// busy machine that wait was a whole time slice, ~4 ms, per call). One call uses the team at a time; a concurrent

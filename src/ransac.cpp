@@ -94,6 +94,10 @@ int iterationsNeeded(int inliers, int n, const RansacParams& params) {
 
 }  // namespace
 
+bool isUpright(const Eigen::Matrix4d& T, double max_tilt) {
+  return max_tilt >= M_PI || T(2, 2) >= std::cos(max_tilt);
+}
+
 Eigen::Matrix4d fitRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target) {
   if (source.size() != target.size() || source.empty()) {
     throw std::invalid_argument("fitRigid: need the same, non-zero number of source and target points");
@@ -115,7 +119,7 @@ RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::
   int best_count = 0;
   int needed = params.iterations;
   const bool check_sample = params.sample_size <= 3;
-  // cos of the angle between R·z and z is R(2, 2); the bound is compared in that form, with no acos per hypothesis.
+  // isUpright with its cosine computed once: hundreds of hypotheses per candidate.
   const double min_up_cos = params.max_tilt >= M_PI ? -2.0 : std::cos(params.max_tilt);
   for (int it = 0; it < std::min(params.iterations, needed) && best_count < n; ++it) {
     drawSample(rng, n, params, &sample, &scratch);

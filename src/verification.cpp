@@ -43,20 +43,14 @@ double offsetWeight(double offset_m, const VerificationConfig& config) {
 
 namespace {
 
-/// True if @p T turns the z axis by at most verification.max_tilt_deg (algorithm §7.2). RANSAC checks its hypotheses;
-/// a refit to nearly collinear centres leaves the turn about their line free and is checked here too.
-bool upright(const Eigen::Matrix4d& T, const VerificationConfig& vc) {
-  return vc.max_tilt_deg >= 180.0 || T(2, 2) >= std::cos(vc.max_tilt_deg * M_PI / 180.0);
-}
-
 /// Guided matching (algorithm §7.2): the nodes the RANSAC pose pairs become the inliers when they are more than
 /// RANSAC's, and the pose is refitted to them. A pair already in LA keeps its index; the others are appended to
 /// the associations, marked NodeMatch::guided.
 void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc,
                       MatchResult* result) {
   GuidedMatch guided = guidedMatching(query.graph, match.graph, result->T_match_query, vc.inlier_threshold,
-                                      result->inliers.size());
-  if (guided.pairs.empty() || !upright(guided.T_match_query, vc)) return;
+                                      result->inliers.size(), ransacParams(vc).max_tilt);
+  if (guided.pairs.empty()) return;
   // LA holds at most one pair per query node (associateNodes), so a query node finds its LA pair directly.
   std::vector<int> in_la(static_cast<size_t>(query.numNodes()), -1);
   const int la = static_cast<int>(result->associations.size());
@@ -116,7 +110,8 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
     dst_in.push_back(target[k]);
   }
   result.T_match_query = fitRigid(src_in, dst_in);
-  if (!upright(result.T_match_query, vc)) result.T_match_query = ransac.T_target_source;
+  // RANSAC checked its hypotheses; a refit to nearly collinear centres leaves the turn about their line free.
+  if (!isUpright(result.T_match_query, ransacParams(vc).max_tilt)) result.T_match_query = ransac.T_target_source;
   if (vc.guided_matching && vc.score_formula == ScoreFormula::kOverlap) addGuidedInliers(query, match, vc, &result);
 
   const double n_in = static_cast<double>(result.inliers.size());

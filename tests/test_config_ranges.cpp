@@ -85,7 +85,7 @@ std::vector<Range> ranges() {
   r.push_back({"verification.min_inliers", {"1", "2000"}, {"0", "2001"}, "[1, 2000]"});
   r.push_back({"verification.min_inlier_fraction", {"0", "1"}, {"-0.01", "1.5"}, "[0, 1]"});
   r.push_back({"verification.ransac_confidence", {"1e-09", "1"}, {"0", "1.001"}, "(0, 1]"});
-  r.push_back({"verification.max_tilt_deg", {"0", "180"}, {"-1", "180.5"}, "[0, 180]"});
+  r.push_back({"verification.max_tilt_deg", {"1", "180"}, {"0", "0.5", "180.5"}, "[1, 180]"});
   r.push_back({"verification.sigma_4", {"0", "1"}, {"5", "-3", "1.0000001"}, "[0, 1]"});
   r.push_back({"verification.select_margin", {"0", "1"}, {"-0.1", "1.5"}, "[0, 1]"});
   r.push_back({"verification.lateral_distance", {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});

@@ -1,5 +1,6 @@
 // Guided matching (algorithm §7.2): node pairs under a pose against a brute-force reading of the rule, and the
 // verification of a real KITTI revisit whose descriptors pick wrong poles.
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/node_extraction.h"
+#include "sgtllc/ransac.h"
 #include "sgtllc/verification.h"
 #include "test_support.h"
 
@@ -130,6 +132,36 @@ TEST(GuidedMatching, RecoversThePoseFromAnOffStart) {
   EXPECT_LT((g.T_match_query - T).cwiseAbs().maxCoeff(), 1e-9);
   // Nothing more than a caller already has: no result.
   EXPECT_TRUE(guidedMatching(graphOf(query), graphOf(match), T, 0.4, 12).pairs.empty());
+}
+
+TEST(GuidedMatching, ARefitBeyondTheTiltBoundEndsTheRounds) {
+  // The nodes' true motion tilts z by 20°: with a 30° bound the rounds refit to it; with a 10° bound the first
+  // refit is refused and nothing is returned, so the caller keeps RANSAC's inliers and pose.
+  const Eigen::Matrix4d T = makeT(Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+                                  Eigen::Vector3d(1, 2, 0));
+  std::vector<Node> query, match;
+  for (int i = 0; i < 8; ++i) {
+    query.push_back({{3.0 * i, 5.0 * std::sin(i), 2.0 * std::cos(i)}, i % 2});
+    match.push_back({apply(T, query.back().centre), i % 2});
+  }
+  const GuidedMatch kept = guidedMatching(graphOf(query), graphOf(match), T, 0.4, 3, 30.0 * M_PI / 180.0);
+  EXPECT_EQ(kept.pairs.size(), 8u);
+  EXPECT_TRUE(isUpright(kept.T_match_query, 30.0 * M_PI / 180.0));
+  EXPECT_FALSE(isUpright(kept.T_match_query, 10.0 * M_PI / 180.0));
+  EXPECT_TRUE(guidedMatching(graphOf(query), graphOf(match), T, 0.4, 3, 10.0 * M_PI / 180.0).pairs.empty());
+}
+
+TEST(IsUpright, TheBoundIsOnTheAngleBetweenTheUpAxes) {
+  // A yaw never tilts; roll or pitch of θ tilts by θ, and a turn of θ about a horizontal axis in any direction too.
+  const auto turn = [](double deg, const Eigen::Vector3d& axis) {
+    return makeT(Eigen::AngleAxisd(deg * M_PI / 180.0, axis.normalized()).toRotationMatrix(), Eigen::Vector3d::Zero());
+  };
+  const double bound = 30.0 * M_PI / 180.0;
+  EXPECT_TRUE(isUpright(turn(170.0, Eigen::Vector3d::UnitZ()), bound));
+  EXPECT_TRUE(isUpright(turn(29.9, Eigen::Vector3d(1, -2, 0)), bound));
+  EXPECT_FALSE(isUpright(turn(30.1, Eigen::Vector3d(1, -2, 0)), bound));
+  EXPECT_FALSE(isUpright(turn(180.0, Eigen::Vector3d::UnitX()), bound));
+  EXPECT_TRUE(isUpright(turn(180.0, Eigen::Vector3d::UnitX()), M_PI));  // π: no check
 }
 
 TEST(GuidedMatching, RealRevisitFromGeometricLabelsBecomesALoop) {

@@ -249,7 +249,9 @@ TEST(Ransac, MaxTiltSkipsUpsideDownFitsOfFlatScenes) {
     for (const auto& p : src) dst.push_back(apply(T, p));
     const auto r = sgtllc::ransacRigid(src, dst, params);
     EXPECT_EQ(r.accepted, tilt_deg < 30.0) << tilt_deg;
-    if (r.accepted) EXPECT_LT((r.T_target_source - T).cwiseAbs().maxCoeff(), 1e-9);
+    if (r.accepted) {
+      EXPECT_LT((r.T_target_source - T).cwiseAbs().maxCoeff(), 1e-9);
+    }
   }
 }
 

@@ -253,7 +253,9 @@ struct VerificationConfig {
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
   /// Largest tilt (°) between the up axes of a loop's two scans: RANSAC skips a hypothesis whose rotation turns z
-  /// by more (algorithm §7.2) [0, 180]; 180 = no check. A ground vehicle is upright at both visits (KITTI's
+  /// by more (algorithm §7.2) [1, 180]; 180 = no check. The sensor's z must be near the vertical: a sensor pitched
+  /// by α on the vehicle turns z by up to 2α between passes driven opposite ways, so a mount pitched more than ~10°
+  /// wants 180 (or its scans turned into a z-up frame). A ground vehicle is upright at both visits (KITTI's
   /// revisits differ by a few degrees at most); objects on flat ground all lie near one plane, which a rotation of
   /// 180° about a horizontal axis maps onto a mirror image of itself, and such upside-down fits were the false loops
   /// of small graphs. [deviation: the paper and the code fit any rotation; BENCHMARKS.md "Upright check"]

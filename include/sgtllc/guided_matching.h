@@ -24,9 +24,12 @@ struct GuidedMatch {
 };
 
 /// Starting from a verified pose, pairs nodes under it (pairsUnderPose), refits the pose to those pairs, and
-/// repeats while the pairs grow, at most @p rounds times. Returns the largest pair set with its pose; empty pairs
-/// (and the identity) if no round found more than @p more_than pairs, so a caller keeps what it had.
+/// repeats while the pairs grow, at most @p rounds times; a refit that turns z by more than @p max_tilt (rad,
+/// isUpright) ends the rounds before it. Returns the largest pair set with the pose fitted to it (the pairs were
+/// found under the pose before, as RANSAC counts inliers under its hypothesis and then refits); empty pairs (and the
+/// identity) if no round found more than @p more_than pairs, so a caller keeps what it had.
 GuidedMatch guidedMatching(const SemanticGraph& query, const SemanticGraph& match, const Eigen::Matrix4d& T_match_query,
-                           double radius, size_t more_than, int rounds = 3);
+                           double radius, size_t more_than, double max_tilt = 3.14159265358979323846,
+                           int rounds = 3);
 
 }  // namespace sgtllc

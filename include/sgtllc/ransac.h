@@ -13,6 +13,10 @@ namespace sgtllc {
 /// Needs at least one pair; source and target must have the same length.
 Eigen::Matrix4d fitRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target);
 
+/// True if the rotation of @p T turns the z axis by at most @p max_tilt (rad): cos of that angle is T(2, 2). Always
+/// true for max_tilt ≥ π. RansacParams::max_tilt and guided matching apply it (algorithm §7.2).
+bool isUpright(const Eigen::Matrix4d& T, double max_tilt);
+
 struct RansacParams {
   int iterations = 500;           ///< hypotheses
   int sample_size = 7;            ///< pairs drawn per hypothesis

@@ -25,13 +25,18 @@ const char* rejectionName(Rejection r);
 
 /// Outcome of comparing a query frame with one candidate ("match") frame.
 struct MatchResult {
-  std::vector<NodeMatch> associations;  ///< LA, in query-node order
-  std::vector<int> inliers;             ///< indices into associations of the RANSAC inliers
+  /// LA in query-node order, then the pairs guided matching added (NodeMatch::guided; algorithm §7.2). A query node
+  /// can appear twice: its LA pair, not an inlier, and a guided pair with another match node. |LA| is the number of
+  /// entries that are not guided.
+  std::vector<NodeMatch> associations;
+  /// Indices into associations of the inliers, ascending: RANSAC's, or guided matching's pairs when it found more.
+  std::vector<int> inliers;
   double score_c = 0.0;                 ///< |LA| / M, M = all query nodes, isolated ones included (algorithm §7.1)
   double score_t = 0.0;                 ///< loop score; 0 unless rejection == kNone (algorithm §7.3)
   Rejection rejection = Rejection::kFewAssociations;
   /// Maps query-frame points into the match frame: p_match = T_match_query · p_query. Kabsch on all inliers
-  /// (algorithm §7.5); the identity unless rejection == kNone.
+  /// (algorithm §7.5), or RANSAC's hypothesis where that refit would tilt beyond verification.max_tilt_deg; the
+  /// identity unless rejection == kNone.
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();
 };
 

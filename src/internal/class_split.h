@@ -33,7 +33,9 @@ class ClassSplit {
 
   /// True if class @p c is downsampled (voxel leaf > 0).
   bool voxelized(int c) const { return chunks_.front().voxels[c].has_value(); }
-  /// Class @p c's voxels in order of first appearance (voxelDownsample of its points); call once, voxelized(c) only.
+  /// Class @p c's voxels in order of first appearance, as voxelDownsample of its points gives them (the sums joined
+  /// range by range, so they can differ from one pass in the last bit; the same at any thread count); call once,
+  /// voxelized(c) only.
   VoxelizedCloud voxels(int c);
   /// Class @p c's points in scan order; call once, !voxelized(c) only.
   std::vector<Eigen::Vector3f> points(int c);

@@ -137,7 +137,7 @@ class KeyIndex {
 
 /// Builds a VoxelizedCloud one point at a time (voxelDownsample, and node extraction straight from the class split
 /// so that no per-class copy of the points is made): indices, sums and their order of accumulation are those of one
-/// insert per point.
+/// insert per point. absorb() joins two accumulators; its sums can then differ from one pass in the last bit.
 class VoxelAccumulator {
  public:
   VoxelAccumulator(double leaf, size_t expected_points)
