@@ -257,8 +257,9 @@ struct VerificationConfig {
   /// by α on the vehicle turns z by up to 2α between passes driven opposite ways, so a mount pitched more than ~10°
   /// wants 180 (or its scans turned into a z-up frame). A ground vehicle is upright at both visits (KITTI's
   /// revisits differ by a few degrees at most); objects on flat ground all lie near one plane, which a rotation of
-  /// 180° about a horizontal axis maps onto a mirror image of itself, and such upside-down fits were the false loops
-  /// of small graphs. [deviation: the paper and the code fit any rotation; BENCHMARKS.md "Upright check"]
+  /// 180° about a horizontal axis maps onto a mirror image of itself: such an upside-down fit of a small graph was
+  /// urban11's one false loop with geometric labels. [deviation: the paper and the code fit any rotation;
+  /// BENCHMARKS.md "Upright check"]
   double max_tilt_deg = 30.0;
   /// Guided matching (guided_matching.h, algorithm §7.2): after RANSAC, the nodes its pose pairs (mutual nearest
   /// same-class nodes closer than inlier_threshold) replace its inliers when they are more, and the pose is
