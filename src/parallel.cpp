@@ -123,7 +123,9 @@ class Team {
   }
 
   std::mutex call_mutex_;  // held for a whole call
-  std::mutex mutex_;       // guards the fields below (the atomics are changed under it too, and read without it)
+  // Guards the fields below; of the atomics, generation_ and next_'s reset and joined_'s increments change under it,
+  // next_'s hand-outs and joined_'s decrements without it, and all are read without it.
+  std::mutex mutex_;
   std::condition_variable wake_, done_;
   std::vector<std::thread> workers_;
   const std::function<void(int)>* job_ = nullptr;
