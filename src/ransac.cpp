@@ -92,11 +92,12 @@ int iterationsNeeded(int inliers, int n, const RansacParams& params) {
   return std::max(1, static_cast<int>(k));
 }
 
+/// The least T(2, 2) = cos(tilt) within @p max_tilt; below −1 (no rotation refused) for max_tilt ≥ π.
+double minUpCosine(double max_tilt) { return max_tilt >= M_PI ? -2.0 : std::cos(max_tilt); }
+
 }  // namespace
 
-bool isUpright(const Eigen::Matrix4d& T, double max_tilt) {
-  return max_tilt >= M_PI || T(2, 2) >= std::cos(max_tilt);
-}
+bool isUpright(const Eigen::Matrix4d& T, double max_tilt) { return T(2, 2) >= minUpCosine(max_tilt); }
 
 Eigen::Matrix4d fitRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target) {
   if (source.size() != target.size() || source.empty()) {
@@ -120,7 +121,7 @@ RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::
   int needed = params.iterations;
   const bool check_sample = params.sample_size <= 3;
   // isUpright with its cosine computed once: hundreds of hypotheses per candidate.
-  const double min_up_cos = params.max_tilt >= M_PI ? -2.0 : std::cos(params.max_tilt);
+  const double min_up_cos = minUpCosine(params.max_tilt);
   for (int it = 0; it < std::min(params.iterations, needed) && best_count < n; ++it) {
     drawSample(rng, n, params, &sample, &scratch);
     if (check_sample && !distancesAgree(source, target, sample, params.inlier_threshold)) continue;

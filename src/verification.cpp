@@ -46,10 +46,10 @@ namespace {
 /// Guided matching (algorithm §7.2): the nodes the RANSAC pose pairs become the inliers when they are more than
 /// RANSAC's, and the pose is refitted to them. A pair already in LA keeps its index; the others are appended to
 /// the associations, marked NodeMatch::guided.
-void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc,
+void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, const RansacParams& params,
                       MatchResult* result) {
-  GuidedMatch guided = guidedMatching(query.graph, match.graph, result->T_match_query, vc.inlier_threshold,
-                                      result->inliers.size(), ransacParams(vc).max_tilt);
+  GuidedMatch guided = guidedMatching(query.graph, match.graph, result->T_match_query, params.inlier_threshold,
+                                      result->inliers.size(), params.max_tilt);
   if (guided.pairs.empty()) return;
   // LA holds at most one pair per query node (associateNodes), so a query node finds its LA pair directly.
   std::vector<int> in_la(static_cast<size_t>(query.numNodes()), -1);
@@ -97,7 +97,8 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
     result.T_match_query = fitRigid(source, target);
     return result;
   }
-  const RansacResult ransac = ransacRigid(source, target, ransacParams(vc));
+  const RansacParams params = ransacParams(vc);
+  const RansacResult ransac = ransacRigid(source, target, params);
   if (!ransac.accepted) {
     result.rejection = Rejection::kRansacFailed;
     return result;
@@ -111,8 +112,8 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   }
   result.T_match_query = fitRigid(src_in, dst_in);
   // RANSAC checked its hypotheses; a refit to nearly collinear centres leaves the turn about their line free.
-  if (!isUpright(result.T_match_query, ransacParams(vc).max_tilt)) result.T_match_query = ransac.T_target_source;
-  if (vc.guided_matching && vc.score_formula == ScoreFormula::kOverlap) addGuidedInliers(query, match, vc, &result);
+  if (!isUpright(result.T_match_query, params.max_tilt)) result.T_match_query = ransac.T_target_source;
+  if (vc.guided_matching && vc.score_formula == ScoreFormula::kOverlap) addGuidedInliers(query, match, params, &result);
 
   const double n_in = static_cast<double>(result.inliers.size());
   switch (vc.score_formula) {

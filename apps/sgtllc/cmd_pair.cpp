@@ -135,6 +135,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
 
 void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
   const MatchResult& m = r.match;
+  const size_t guided = numGuided(m);
   Json matches = Json::array();
   std::vector<bool> inlier(m.associations.size(), false);
   for (int k : m.inliers) inlier[k] = true;
@@ -176,8 +177,8 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                                                              config.verification)},
                               {"nodes_query", r.query_nodes.size()},
                               {"nodes_match", r.match_nodes.size()},
-                              {"associations", m.associations.size() - numGuided(m)},
-                              {"guided_pairs", numGuided(m)},
+                              {"associations", m.associations.size() - guided},
+                              {"guided_pairs", guided},
                               {"inliers", m.inliers.size()},
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},

@@ -41,8 +41,7 @@ struct RansacResult {
 
 /// RANSAC over correspondences (source_k, target_k) (algorithm §7.2): keeps the hypothesis with strictly the most
 /// inliers (so the first one found wins a tie) among those within `max_tilt`; stops after `iterations`, once every
-/// pair is an inlier, or when
-/// the adaptive bound for `confidence` is reached. Deterministic for a given seed on every platform (no std::uniform_int_distribution).
+/// pair is an inlier, or when the adaptive bound for `confidence` is reached. Deterministic for a given seed on every platform (no std::uniform_int_distribution).
 RansacResult ransacRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target,
                          const RansacParams& params);
 
