@@ -1,9 +1,22 @@
 /// @file output_file.h
-/// @brief How every sgtllc writer creates a file: never half a file, and never over a file the user did not
-///        agree to lose (issue 15, defect 3).
+/// @brief How every sgtllc writer creates a file: never half a file, never through a link someone placed, and
+///        never over a file the user did not agree to lose.
 ///
-/// A file is written to a temporary name beside its destination and renamed into place. With
-/// Overwrite::kRefuse the rename itself refuses an existing destination (Linux renameat2 RENAME_NOREPLACE, or a
+/// A file is written to a temporary file beside its destination and renamed into place:
+/// - The temporary file is `FOLDER/.NAME.sgtllc-tmp-XXXXXXXXXXXX` for `FOLDER/NAME` (12 random letters and
+///   digits; isTemporaryFileName()), created with O_CREAT|O_EXCL|O_NOFOLLOW and mode 0666 less the umask, as any
+///   new file: a file or symlink already at that name is never opened or followed, so a link planted in the folder
+///   cannot redirect a save, and the name cannot be guessed in advance.
+/// - Its data are fsynced before the rename and the folder after it: after a power cut the destination holds the
+///   old file or the whole new one.
+/// - It is removed on every error path, and on SIGINT, SIGTERM and SIGHUP when their action was the default one (a
+///   handler is installed once, at the first save, unlinks the live temporary files with async-signal-safe calls
+///   and re-raises the signal; an application's own handlers are left alone, the library prints nothing).
+/// - A process killed by SIGKILL (or a power cut) cannot remove it: such a leftover keeps the hidden, recognisable
+///   name, never the destination's, so no reader takes it for output (the sequence and node-folder readers list
+///   `*.bin` / `*.txt` only, and the name ends in the random letters); delete `.*.sgtllc-tmp-*` files at leisure.
+///
+/// With Overwrite::kRefuse the rename itself refuses an existing destination (Linux renameat2 RENAME_NOREPLACE, or a
 /// hard link where the file system lacks it), so a file that appeared after the up-front check is still kept.
 #pragma once
 
@@ -35,9 +48,15 @@ void checkOutputFiles(const std::vector<std::string>& paths, Overwrite overwrite
 /// sgtllc::Error naming @p path; the temporary file never stays behind.
 void writeFileAtomically(const std::string& path, std::string_view content, Overwrite overwrite);
 
-/// For files another library writes (PNG plots): calls @p write with a temporary name beside @p path, then renames
-/// that file to @p path as writeFileAtomically() does. The temporary file is removed if either step fails.
+/// For files another library writes by name (PNG plots): creates the temporary file exclusively as
+/// writeFileAtomically() does, calls @p write with its name (the writer truncates and fills it), checks that the
+/// name still holds that same regular file, then publishes it likewise. The temporary file is removed if any step
+/// fails.
 void writeThroughTemporary(const std::string& path, Overwrite overwrite,
                            const std::function<void(const std::string& tmp)>& write);
+
+/// True for a name of the form `.NAME.sgtllc-tmp-XXXXXXXXXXXX` (12 letters or digits): a temporary file of a save,
+/// or one left by a killed process. A file name, not a path.
+bool isTemporaryFileName(std::string_view filename);
 
 }  // namespace sgtllc::io
