@@ -64,6 +64,19 @@ int FrameDatabase::add(StoredFrame frame) {
   return size() - 1;
 }
 
+void FrameDatabase::assign(std::vector<std::vector<Node>> nodes, std::vector<float> globals) {
+  if (size() != 0) throw std::invalid_argument("FrameDatabase::assign: the database is not empty");
+  if (nodes.empty() != globals.empty() || (!nodes.empty() && globals.size() % nodes.size() != 0)) {
+    throw std::invalid_argument("FrameDatabase::assign: the keys do not divide evenly among the frames");
+  }
+  if (nodes.empty()) return;
+  impl_->dim = static_cast<int>(globals.size() / nodes.size());
+  impl_->globals = std::move(globals);
+  impl_->nodes = std::move(nodes);
+  impl_->kdtree.reset();
+  impl_->ivf.reset();
+}
+
 std::vector<RetrievedFrame> FrameDatabase::query(const std::vector<float>& global, int last, int k) const {
   std::vector<RetrievedFrame> out;
   last = std::min(last, size() - 1);

@@ -11,6 +11,7 @@
 
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/io/nodes.h"
+#include "sgtllc/map/map_format.h"
 #include "test_cli_support.h"
 #include "test_map_support.h"
 
@@ -63,7 +64,7 @@ TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
       << run_out;
   const auto info = test::run("map info " + path("m.sgtmap"));
   ASSERT_EQ(info.status, 0) << info.out;
-  EXPECT_NE(info.out.find("format version 1"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("format version " + std::to_string(map::kFormatVersion)), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("frames 110 (with poses), first 000000, last 000109"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("retrieval.histogram_bins: 10"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("  KEYS v1  "), std::string::npos) << info.out;

@@ -49,6 +49,11 @@ class FrameDatabase {
   /// Appends a frame; returns its index. Throws std::invalid_argument if the global descriptor's length differs
   /// from the first frame's.
   int add(StoredFrame frame);
+  /// Fills an empty database at once: frame i has @p nodes[i] and the key @p globals[i·d, (i+1)·d), d =
+  /// globals.size() / nodes.size(). The key storage is taken over, not copied or grown, so loading a map costs
+  /// its keys once (docs/map-format.md, "Reading"). Throws std::invalid_argument unless the database is empty and
+  /// the keys divide evenly among the frames.
+  void assign(std::vector<std::vector<Node>> nodes, std::vector<float> globals);
 
   /// Switches the search structure and its parameters (a loaded map is searched as the configuration says);
   /// results are unchanged up to the ties RetrievalMethod::kKdTree documents and, for kIvf, the lists a query

@@ -5,11 +5,15 @@
 #include <string_view>
 #include <unordered_set>
 
+#include <Eigen/LU>
+
 #include "sgtllc/io/config_yaml.h"
 #include "sgtllc/retrieval/retrieval_key.h"
 
 namespace sgtllc::map {
 namespace {
+
+constexpr double kRigidTolerance = 1e-3;
 
 /// Keys a map depends on (docs/map-format.md, "Configuration"): whole sections (the labeller too: geometric and
 /// network labels give other nodes), or single retrieval keys.
@@ -96,7 +100,16 @@ void checkFrames(const Map& map, const std::string& source) {
     if (!seen.insert(name).second) invalid("frame name '" + name + "' is used twice (names must be unique)");
   }
   for (size_t f = 0; f < map.poses.size(); ++f) {
-    if (!map.poses[f].allFinite()) invalid("the pose of frame '" + map.names[f] + "' is not finite");
+    const Eigen::Matrix4d& T = map.poses[f];
+    if (!T.allFinite()) invalid("the pose of frame '" + map.names[f] + "' is not finite");
+    // The bound the trajectory readers apply (io/trajectory.h): beyond it the matrix is not a rotation at all.
+    const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
+    const double orthonormal = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    const double det = R.determinant();
+    if (orthonormal > kRigidTolerance || std::abs(det - 1.0) > kRigidTolerance) {
+      invalid("the pose of frame '" + map.names[f] + "' is not a rigid motion (|RᵀR − I| = " +
+              std::to_string(orthonormal) + ", det R = " + std::to_string(det) + "; at most 0.001 off)");
+    }
   }
 }
 

@@ -1,18 +1,61 @@
 #include "sgtllc/map/map_file.h"
 
-#include <filesystem>
+#include <sys/resource.h>
+#include <unistd.h>
 
-#include "file_util.h"  // sgtllc_io's private readWholeFile: the one way files are read whole
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <new>
+
+#include "file_util.h"  // sgtllc_io's private openForReading: the one way files are opened
+#include "map/map_decode.h"
 
 namespace sgtllc::map {
 namespace {
 
-std::string mapBytes(const std::string& path) {
+/// A map file read in order through stdio's buffer; its size is the one it had when opened.
+class FileSource final : public detail::ByteSource {
+ public:
+  explicit FileSource(const std::string& path) : path_(path), file_(io::detail::openForReading(path)) {
+    std::error_code ec;
+    size_ = std::filesystem::file_size(path, ec);
+    if (ec) throw Error("cannot read " + path + ": " + ec.message());
+  }
+  size_t read(char* out, size_t n) override {
+    const size_t got = std::fread(out, 1, n, file_.get());
+    if (got < n && std::ferror(file_.get())) throw Error("cannot read " + path_ + ": " + std::strerror(errno));
+    return got;
+  }
+  uint64_t size() const override { return size_; }
+
+ private:
+  std::string path_;
+  io::detail::FilePtr file_;
+  uint64_t size_ = 0;
+};
+
+/// The most a map may declare: this machine's memory, or the address-space limit if one is set (ulimit -v).
+uint64_t loadableBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  uint64_t limit = pages > 0 && page > 0 ? static_cast<uint64_t>(pages) * static_cast<uint64_t>(page) : UINT64_MAX;
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min<uint64_t>(limit, as.rlim_cur);
+  return limit;
+}
+
+Map readFile(const std::string& path, RetrievalMethod method, MapLayout* layout) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw Error("cannot read map " + path + ": is a directory, not a map file");
   }
-  return io::detail::readWholeFile(path);
+  FileSource file(path);
+  try {
+    return detail::decodeMapFrom(file, path, method, layout, loadableBytes());
+  } catch (const std::bad_alloc&) {  // within the machine's memory but not within what is free now
+    throw Error(path + ": out of memory while loading a map of " + std::to_string(file.size()) + " bytes");
+  }
 }
 
 }  // namespace
@@ -23,13 +66,11 @@ void writeMapFile(const std::string& path, const Map& map, io::Overwrite overwri
 }
 
 Map readMapFile(const std::string& path, const Config& config, MapLayout* layout) {
-  Map map = decodeMap(mapBytes(path), path, config.retrieval.method, layout);
+  Map map = readFile(path, config.retrieval.method, layout);
   checkCompatible(map, config, path);
   return map;
 }
 
-Map readMapFile(const std::string& path, MapLayout* layout) {
-  return decodeMap(mapBytes(path), path, RetrievalMethod::kBruteForce, layout);
-}
+Map readMapFile(const std::string& path, MapLayout* layout) { return readFile(path, RetrievalMethod::kBruteForce, layout); }
 
 }  // namespace sgtllc::map

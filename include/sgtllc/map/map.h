@@ -1,6 +1,6 @@
 /// @file map.h
 /// @brief A saved loop database: the frames a detector stored, their names and (optionally) poses, and the
-///        configuration fields their contents depend on (issue 10; docs/map-format.md).
+///        configuration fields their contents depend on (docs/map-format.md).
 #pragma once
 
 #include <cstdint>
@@ -38,6 +38,8 @@ enum class MapProblem {
   kTruncated,     ///< fewer bytes than the header declares
   kCorrupted,     ///< a checksum, a length or a value is wrong
   kNewerVersion,  ///< written by a newer sgtllc (format or section version above what this one reads)
+  kOlderVersion,  ///< written by an older sgtllc in a format version this one no longer reads: rebuild the map
+  kTooLarge,      ///< the header declares more bytes than this machine can load (its memory, or ulimit -v)
   kIncompatible,  ///< built with a configuration whose stored contents differ from this one's (mapConfig)
   kInvalid,       ///< a map that cannot be saved (names missing or repeated, poses for some frames only, …)
 };
@@ -75,7 +77,7 @@ Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std
             std::vector<Eigen::Matrix4d> poses = {});
 
 /// Throws MapError(kInvalid) naming @p source unless names and poses fit the database (counts; names non-empty and
-/// unique; poses finite).
+/// unique; poses finite rigid motions: |RᵀR − I| and |det R − 1| at most 1e-3, the trajectory readers' bound).
 void checkFrames(const Map& map, const std::string& source);
 
 }  // namespace sgtllc::map

@@ -1,5 +1,5 @@
 /// @file map_file.h
-/// @brief Map files: one sequential read, an atomic write that never replaces a file unasked (docs/map-format.md).
+/// @brief Map files: read one section at a time, written atomically, that never replaces a file unasked (docs/map-format.md).
 #pragma once
 
 #include <string>
@@ -15,9 +15,11 @@ namespace sgtllc::map {
 /// partial map, and with io::Overwrite::kRefuse an existing file is kept. Throws sgtllc::Error naming @p path.
 void writeMapFile(const std::string& path, const Map& map, io::Overwrite overwrite);
 
-/// Reads the map file @p path in one sequential read and decodes it (decodeMap), its frames searched with
-/// @p config's retrieval.method, then checks it against @p config (checkCompatible). Throws sgtllc::Error naming
-/// the file if it cannot be read or is a directory, and MapError naming it for a bad or incompatible map.
+/// Reads the map file @p path one section at a time, as decodeMap() checks bytes (never holding the file whole:
+/// loading takes about 1.1 times the file's size), its frames searched with @p config's retrieval.method, then
+/// checks it against @p config (checkCompatible). Throws sgtllc::Error naming the file if it cannot be read, is a
+/// directory or runs out of memory, and MapError naming it for a bad, old or incompatible map, or one whose header
+/// declares more bytes than this machine's memory (MapProblem::kTooLarge, before any allocation).
 Map readMapFile(const std::string& path, const Config& config, MapLayout* layout = nullptr);
 
 /// The same without a configuration to check against (`sgtllc map info`).

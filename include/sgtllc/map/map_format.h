@@ -12,8 +12,10 @@
 
 namespace sgtllc::map {
 
-/// The format version this sgtllc writes and the newest it reads (docs/map-format.md, "Versions").
-inline constexpr uint32_t kFormatVersion = 1;
+/// The format version this sgtllc writes and the only one it reads (docs/map-format.md, "Versions"): it rises
+/// whenever what a map records changes, including the configuration fields mapConfig() stores. Version 1 maps
+/// (before labeller.* was recorded) are refused as MapProblem::kOlderVersion.
+inline constexpr uint32_t kFormatVersion = 2;
 
 /// One section of a map file as found by decodeMap.
 struct SectionInfo {
@@ -35,8 +37,8 @@ struct MapLayout {
 std::string encodeMap(const Map& map, const std::string& source = "map");
 
 /// The map in @p bytes, its frames searched with @p method. Checks everything before it returns: throws
-/// MapError naming @p source and saying which problem (not a map, truncated, corrupted, newer version), never a
-/// partly filled map. Does not compare the configuration (checkCompatible does). Fills @p layout if given.
+/// MapError naming @p source and saying which problem (not a map, truncated, corrupted, older or newer version),
+/// never a partly filled map. Does not compare the configuration (checkCompatible does). Fills @p layout if given.
 Map decodeMap(std::string_view bytes, const std::string& source, RetrievalMethod method = RetrievalMethod::kBruteForce,
               MapLayout* layout = nullptr);
 

@@ -1,0 +1,21 @@
+#!/bin/sh
+# Writes fuzz/seeds/map/ with the given sgtllc: two 3-frame maps of fixed synthetic node files (8 nodes per frame,
+# SemanticKITTI ids of the seven paper classes), one without poses and one with them (`--odometry`). Run it whenever the map format
+# version changes (docs/map-format.md, "Versions"), so the fuzzer starts from files this build reads.
+#   scripts/make-map-seeds.sh build/apps/sgtllc/sgtllc
+set -eu
+cli=${1:?usage: make-map-seeds.sh SGTLLC_BINARY}
+out=$(dirname "$0")/../fuzz/seeds/map
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/nodes"
+for f in 0 1 2; do
+  awk -v f="$f" 'BEGIN { split("50 51 70 71 72 80 81", id); for (k = 0; k < 8; ++k) printf "%.3f %.3f %.3f %d\n", 3 * k - 10 + f, 7 - 2 * k, 0.5 * (k % 3), id[k % 7 + 1] }' \
+    > "$work/nodes/00000$f.txt"
+done
+printf '1 0 0 %d 0 1 0 0 0 0 1 0\n' 0 1 2 > "$work/poses.txt"
+printf 'Tr: 1 0 0 0 0 1 0 0 0 0 1 0\n' > "$work/calib.txt"
+"$cli" run --nodes "$work/nodes" --save-map "$out/three_frames.sgtmap" --force > /dev/null 2>&1
+"$cli" run --nodes "$work/nodes" --odometry "$work/poses.txt" --calib "$work/calib.txt" \
+  --save-map "$out/three_frames_poses.sgtmap" --force > /dev/null 2>&1 2>&1
+"$cli" map info "$out/three_frames_poses.sgtmap" | head -3

@@ -1,0 +1,91 @@
+#include "map/map_sections.h"
+
+#include <cmath>
+#include <string>
+
+#include "map/ivf_section.h"
+
+namespace sgtllc::map::detail {
+namespace {
+
+constexpr size_t kNodeBytes = 3 * sizeof(double) + sizeof(int32_t);
+
+void readConfig(Reader& r, Parts& parts) {
+  const uint32_t n = r.get<uint32_t>();
+  if (n > r.remaining() / 8) r.fail("a count of " + std::to_string(n) + " fields does not fit in the section");
+  ConfigFields fields;
+  fields.reserve(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    std::string key = r.text();
+    fields.emplace_back(std::move(key), r.text());
+  }
+  parts.config = std::move(fields);
+}
+
+void readNames(Reader& r, Parts& parts) {
+  std::vector<std::string> names(r.count(sizeof(uint32_t)));
+  for (std::string& name : names) name = r.text();
+  parts.names = std::move(names);
+}
+
+void readPoses(Reader& r, Parts& parts) {
+  std::vector<Eigen::Matrix4d> poses(r.count(12 * sizeof(double)), Eigen::Matrix4d::Identity());
+  for (Eigen::Matrix4d& T : poses) {
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 4; ++col) T(row, col) = r.get<double>();
+    }
+  }
+  parts.poses = std::move(poses);  // checkFrames() tests that they are finite rigid motions
+}
+
+void readNodes(Reader& r, Parts& parts) {
+  std::vector<std::vector<Node>> frames(r.count(sizeof(uint32_t)));
+  std::vector<uint32_t> counts(frames.size());
+  uint64_t total = 0;
+  for (uint32_t& c : counts) total += c = r.get<uint32_t>();
+  if (total != r.remaining() / kNodeBytes || r.remaining() % kNodeBytes != 0) {
+    r.fail(std::to_string(total) + " nodes declared, " + std::to_string(r.remaining()) + " bytes of them found");
+  }
+  for (size_t f = 0; f < frames.size(); ++f) {
+    frames[f].resize(counts[f]);
+    for (Node& n : frames[f]) {
+      for (int k = 0; k < 3; ++k) n.centre[k] = r.get<double>();
+      n.label = r.get<int32_t>();
+      if (!n.centre.allFinite()) r.fail("a node centre is not finite");
+      if (n.label < 0 || n.label >= kMaxClasses) r.fail("a node label is out of range");
+    }
+  }
+  parts.nodes = std::move(frames);
+}
+
+void readKeys(Reader& r, Parts& parts) {
+  const uint32_t dim = r.get<uint32_t>();
+  const uint64_t n = r.get<uint64_t>();
+  if (dim == 0 || dim > (1u << 20)) r.fail("a key length of " + std::to_string(dim));
+  if (n != r.remaining() / (sizeof(float) * dim) || r.remaining() % (sizeof(float) * dim) != 0) {
+    r.fail(std::to_string(n) + " keys declared, " + std::to_string(r.remaining()) + " bytes of them found");
+  }
+  std::vector<float> keys(static_cast<size_t>(n) * dim);
+  for (float& v : keys) {
+    v = r.get<float>();
+    if (!std::isfinite(v)) r.fail("a key entry is not finite");
+  }
+  parts.keys.emplace(dim, std::move(keys));
+}
+
+void readIvf(Reader& r, Parts& parts) { parts.ivf = readIvfState(r); }
+
+constexpr SectionKind kSections[] = {
+    {"CONF", readConfig}, {"FRMS", readNames}, {"POSE", readPoses}, {"NODE", readNodes}, {"KEYS", readKeys},
+    {"IVFS", readIvf}};
+
+}  // namespace
+
+const SectionKind* findSection(std::string_view tag) {
+  for (const SectionKind& k : kSections) {
+    if (k.tag == tag) return &k;
+  }
+  return nullptr;
+}
+
+}  // namespace sgtllc::map::detail
