@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "sgtllc/io/kitti.h"
 #include "sgtllc/map/map_file.h"
 #include "test_cli_support.h"
 #include "test_map_support.h"
@@ -120,6 +121,22 @@ TEST_F(MapVersions, AHugeSparseFileIsRefusedByNameBeforeAnythingIsAllocated) {
   std::fstream(huge, std::ios::in | std::ios::out | std::ios::binary).write(small.data(), 40);
   EXPECT_EQ(std::string(mapErrorOf([&] { map::readMapFile(huge); }).what()),
             huge + ": corrupted map: section 1 of 4: checksum mismatch");
+}
+
+// The text readers read their files whole (io/file_util.h): a file beyond this machine's memory is refused by name
+// before any allocation, not with std::bad_alloc.
+TEST_F(MapVersions, AHugeSparseTextFileIsRefusedByNameToo) {
+  const std::string huge = writeBytes("poses.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n");
+  fs::resize_file(huge, uint64_t{1} << 40);
+  try {
+    io::readKittiPoses(huge);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("cannot read " + huge + ": 1099511627776 bytes, more than this machine can "
+                                          "load (", 0),
+              0u)
+        << e.what();
+  }
 }
 
 TEST_F(MapVersions, APoseSectionThatIsNotRigidIsRefusedNamingTheFile) {

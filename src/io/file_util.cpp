@@ -1,9 +1,13 @@
 #include "file_util.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <new>
 
 namespace sgtllc::io::detail {
 
@@ -20,13 +24,35 @@ std::string readWholeFile(const std::string& path) {
   FilePtr file = openForReading(path);
   std::string bytes;
   std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);  // a hint only: one allocation for large files (maps)
-  if (!ec) bytes.reserve(static_cast<size_t>(size));
-  char chunk[1 << 16];
-  size_t n = 0;
-  while ((n = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0) bytes.append(chunk, n);
+  const auto size = std::filesystem::file_size(path, ec);  // a hint: one allocation, and a size to refuse early
+  if (!ec && size > loadableBytes()) {
+    throw Error("cannot read " + path + ": " + std::to_string(size) + " bytes, more than this machine can load (" +
+                gibText(loadableBytes()) + " of memory)");
+  }
+  try {
+    if (!ec) bytes.reserve(static_cast<size_t>(size));
+    char chunk[1 << 16];
+    size_t n = 0;
+    while ((n = std::fread(chunk, 1, sizeof(chunk), file.get())) > 0) bytes.append(chunk, n);
+  } catch (const std::bad_alloc&) {
+    throw Error("cannot read " + path + ": out of memory for " + std::to_string(ec ? bytes.size() : size) + " bytes");
+  }
   if (std::ferror(file.get())) throw Error("cannot read " + path + ": " + std::strerror(errno));
   return bytes;
+}
+
+uint64_t loadableBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  uint64_t limit = pages > 0 && page > 0 ? static_cast<uint64_t>(pages) * static_cast<uint64_t>(page) : UINT64_MAX;
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min<uint64_t>(limit, as.rlim_cur);
+  return limit;
+}
+
+std::string gibText(uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
+  return text;
 }
 
 void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes, int num_classes) {

@@ -39,8 +39,17 @@ void swapWordsIfBigEndian(std::vector<T>& words) {
 /// Opens a file for binary reading. Throws `cannot open PATH: REASON` (strerror, or "is a directory").
 FilePtr openForReading(const std::string& path);
 
-/// The whole contents of a file (opened as openForReading); throws `cannot read PATH: REASON` on a read error.
+/// The whole contents of a file (opened as openForReading); throws `cannot read PATH: REASON` on a read error, and
+/// `cannot read PATH: N bytes, more than this machine can load (M GiB of memory)` for a file larger than
+/// loadableBytes() (a sparse file of a terabyte), before allocating anything.
 std::string readWholeFile(const std::string& path);
+
+/// The most one file may cost in memory: this machine's physical memory, or the address-space limit when one is set
+/// (ulimit -v). Readers refuse larger inputs by name rather than fail with an allocation error.
+uint64_t loadableBytes();
+
+/// "1.5 GiB": @p bytes in GiB with one decimal, for messages.
+std::string gibText(uint64_t bytes);
 
 /// Throws `cannot write PATH: node I has label L, not a stable class index 0..C−1` (C = @p num_classes) for the
 /// first node whose label is not a stable class index. Writers call it before creating the file.

@@ -4,24 +4,14 @@
 #include "map/map_decode.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstring>
 #include <set>
 
+#include "file_util.h"  // gibText
 #include "map/map_sections.h"
 
 namespace sgtllc::map {
 namespace detail {
-namespace {
-
-std::string gib(uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
-  return text;
-}
-
-}  // namespace
-
 Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod method, MapLayout* layout,
                   uint64_t loadable_bytes) {
   const auto fail = [&](MapProblem problem, const std::string& what) { throw MapError(problem, source + ": " + what); };
@@ -73,8 +63,8 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   // The decoded map takes about 1.1 times its file (docs/map-format.md, "Reading"): refuse what cannot fit
   // rather than fail half way with an allocation error.
   if (file_bytes > loadable_bytes) {
-    fail(MapProblem::kTooLarge, "a map of " + sizes + " (" + gib(file_bytes) +
-                                    ") is more than this machine can load (" + gib(loadable_bytes) + " of memory)");
+    fail(MapProblem::kTooLarge, "a map of " + sizes + " (" + io::detail::gibText(file_bytes) +
+                                    ") is more than this machine can load (" + io::detail::gibText(loadable_bytes) + " of memory)");
   }
 
   MapLayout seen;

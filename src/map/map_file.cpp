@@ -1,15 +1,12 @@
 #include "sgtllc/map/map_file.h"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <new>
 
-#include "file_util.h"  // sgtllc_io's private openForReading: the one way files are opened
+#include "file_util.h"  // sgtllc_io's private openForReading and loadableBytes: how files are opened and sized
 #include "map/map_decode.h"
 
 namespace sgtllc::map {
@@ -36,15 +33,6 @@ class FileSource final : public detail::ByteSource {
   uint64_t size_ = 0;
 };
 
-/// The most a map may declare: this machine's memory, or the address-space limit if one is set (ulimit -v).
-uint64_t loadableBytes() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-  uint64_t limit = pages > 0 && page > 0 ? static_cast<uint64_t>(pages) * static_cast<uint64_t>(page) : UINT64_MAX;
-  struct rlimit as {};
-  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min<uint64_t>(limit, as.rlim_cur);
-  return limit;
-}
-
 Map readFile(const std::string& path, RetrievalMethod method, MapLayout* layout) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -52,7 +40,7 @@ Map readFile(const std::string& path, RetrievalMethod method, MapLayout* layout)
   }
   FileSource file(path);
   try {
-    return detail::decodeMapFrom(file, path, method, layout, loadableBytes());
+    return detail::decodeMapFrom(file, path, method, layout, io::detail::loadableBytes());
   } catch (const std::bad_alloc&) {  // within the machine's memory but not within what is free now
     throw Error(path + ": out of memory while loading a map of " + std::to_string(file.size()) + " bytes");
   }
