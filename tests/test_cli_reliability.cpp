@@ -102,7 +102,7 @@ TEST_F(CliReliability, EvalReportWritesBesideUnrelatedFilesAndReplacesOnlyWithFo
   for (const std::string& f : eval::pairListReportFiles(path("report"))) EXPECT_TRUE(fs::exists(f)) << f;
   // No temporary file stays behind.
   for (const auto& e : fs::directory_iterator(path("report"))) {
-    EXPECT_THAT(e.path().filename().string(), Not(HasSubstr(".tmp")));
+    EXPECT_FALSE(io::isTemporaryFileName(e.path().filename().string())) << e.path();
   }
   const std::string metrics = path("report/metrics.json");
   const std::string first = readAll(metrics);
