@@ -35,7 +35,7 @@ class NodeScore(Enum):
 class ScoreFormula(Enum):
     PAPER: int; LEGACY: int; OVERLAP: int
 class LabelSource(Enum):
-    FILE: int; GEOMETRIC: int
+    FILE: int; GEOMETRIC: int; HYBRID: int
 class RefinementStatus(Enum):
     CONVERGED: int; MAX_ITERATIONS: int; TOO_FEW_POINTS: int; DEGENERATE: int; LOW_FITNESS: int; MOVED_TOO_FAR: int
 class RobustLoss(Enum):
@@ -347,6 +347,7 @@ class RelocalizationTracker:
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
 def label_scan_ids(points: ArrayLike, config: LabellerConfig = ...) -> np.ndarray: ...  # (N,) uint32 SemanticKITTI ids
+def apply_labeller(points: ArrayLike, labels: ArrayLike, config: Config) -> np.ndarray: ...  # (N,) uint32 ids as the node extraction sees them
 def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32
 def read_labels(path: str) -> np.ndarray: ...  # (N,) uint32
 def default_label_path(bin_path: str) -> str: ...

@@ -14,7 +14,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/quote.h"
 #include "sgtllc/io/sequence.h"
-#include "sgtllc/label/geometric_labeller.h"
+#include "sgtllc/label/cloud_labeller.h"
 #include "sgtllc/node_extraction.h"
 
 namespace fs = std::filesystem;
@@ -31,15 +31,19 @@ struct RepeatabilityCliOptions {
   bool json = false;
 };
 
-/// One scan of the folder reduced both ways: nodes from its labels and from the geometric labeller.
-struct ScanNodes {
-  std::vector<Node> file, geometric;
+/// One way of labelling the scans: the folder's labels, the hybrid (when the label set lacks poles or trunks)
+/// and the geometric labeller.
+struct Way {
+  const char* name;  ///< printed
+  const char* key;   ///< JSON
+  label::CloudLabeller labeller;
+  NodeExtractor extractor;
 };
 
 struct PairResult {
   std::string query, match;
   double distance = 0.0;
-  eval::NodeRepeatability file, geometric;
+  std::vector<eval::NodeRepeatability> ways;  ///< one per Way
 };
 
 /// LiDAR poses by frame number: the poses file through the calib's Tr when there is one (KITTI's cam0 poses),
@@ -105,36 +109,42 @@ Json countsJson(const eval::NodeRepeatability& r, const LabelConfig& labels) {
 
 void runRepeatability(const RepeatabilityCliOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
-  Config geometric_config = config;
-  geometric_config.labeller.source = LabelSource::kGeometric;
   const io::SequenceDir seq(o.sequence, io::SequenceLabels{true, o.labels_dir});
   std::string poses_from;
   const std::vector<Eigen::Matrix4d> poses = lidarPosesOf(o, &poses_from);
   const auto pairs = pairIndices(o, seq);
 
-  const NodeExtractor from_file(config.cluster, config.labels, config.graph.max_nodes);
-  const NodeExtractor from_geometry(config.cluster, effectiveLabelConfig(geometric_config), config.graph.max_nodes);
+  std::vector<Way> ways;
+  const auto addWay = [&](const char* name, const char* key, LabelSource source) {
+    Config c = config;
+    c.labeller.source = source;
+    ways.push_back({name, key, label::CloudLabeller(c.labels, c.labeller),
+                    NodeExtractor(c.cluster, effectiveLabelConfig(c), c.graph.max_nodes)});
+  };
+  addWay("labels (file)", "file", LabelSource::kFile);
+  if (hybridSplits(config.labels).any()) addWay("hybrid", "hybrid", LabelSource::kHybrid);
+  addWay("geometric labeller", "geometric", LabelSource::kGeometric);
   const label::GeometricLabeller labeller(config.labeller);
   const LabelMap reference_map(config.labels);
   const eval::ClassMerge merge = eval::labellerMerge(config.labels);
 
   // Each scan is reduced once, when a pair first needs it; the label agreement is summed over those scans.
-  std::map<size_t, ScanNodes> scans;
+  std::map<size_t, std::vector<std::vector<Node>>> scans;  // per scan, the nodes of each way
   eval::ClassAgreement agreement;
-  const auto nodesOf = [&](size_t i) -> const ScanNodes& {
+  const auto nodesOf = [&](size_t i) -> const std::vector<std::vector<Node>>& {
     auto it = scans.find(i);
     if (it != scans.end()) return it->second;
     const LabeledCloud cloud = seq.load(i);
-    ScanNodes s;
-    s.file = from_file.extract(cloud).nodes;
-    const label::Labelling l = labeller.classify(cloud.points);
-    agreement.add(l.classes, eval::stableClasses(cloud.labels, reference_map), merge);
-    s.geometric = from_geometry.extract(label::labelCloud(cloud.points, labeller)).nodes;
-    return scans.emplace(i, std::move(s)).first->second;
+    std::vector<std::vector<Node>> nodes;
+    for (const Way& w : ways) {
+      nodes.push_back(w.extractor.extract(w.labeller.changesLabels() ? w.labeller.apply(cloud) : cloud).nodes);
+    }
+    agreement.add(labeller.classify(cloud.points).classes, eval::stableClasses(cloud.labels, reference_map), merge);
+    return scans.emplace(i, std::move(nodes)).first->second;
   };
 
   std::vector<PairResult> results;
-  eval::NodeRepeatability file_all, geometric_all;
+  std::vector<eval::NodeRepeatability> all(ways.size());
   size_t skipped = 0;
   for (const auto& [q, m] : pairs) {
     const long nq = frameNumber(seq.frameName(q), o.sequence), nm = frameNumber(seq.frameName(m), o.sequence);
@@ -143,35 +153,33 @@ void runRepeatability(const RepeatabilityCliOptions& o) {
                   std::to_string(poses.size()) + " poses)");
     }
     const Eigen::Isometry3d T_m_q(poses[nm].inverse() * poses[nq]);
-    PairResult r{seq.frameName(q), seq.frameName(m), T_m_q.translation().norm(), {}, {}};
+    PairResult r{seq.frameName(q), seq.frameName(m), T_m_q.translation().norm(), {}};
     if (r.distance > o.max_distance) {
       ++skipped;
       continue;
     }
-    const ScanNodes& a = nodesOf(q);
-    const ScanNodes& b = nodesOf(m);
-    r.file = eval::nodeRepeatability(a.file, b.file, T_m_q, o.measure);
-    r.geometric = eval::nodeRepeatability(a.geometric, b.geometric, T_m_q, o.measure);
-    file_all.add(r.file);
-    geometric_all.add(r.geometric);
-    results.push_back(r);
+    const auto& a = nodesOf(q);
+    const auto& b = nodesOf(m);
+    for (size_t w = 0; w < ways.size(); ++w) {
+      r.ways.push_back(eval::nodeRepeatability(a[w], b[w], T_m_q, o.measure));
+      all[w].add(r.ways.back());
+    }
+    results.push_back(std::move(r));
   }
   if (results.empty()) {
     throw Error(o.sequence + ": no pair within --max-distance " + fixed(o.max_distance, 1) + " m (" +
                 std::to_string(skipped) + " farther apart)");
   }
-  const LabelConfig geometric_labels = effectiveLabelConfig(geometric_config);
 
   if (o.json) {
     Json j = {{"sequence", o.sequence}, {"poses", poses_from}, {"radius_m", o.measure.radius},
-              {"range_m", o.measure.range}, {"pairs_skipped", skipped},
-              {"file", countsJson(file_all, config.labels)},
-              {"geometric", countsJson(geometric_all, geometric_labels)}};
+              {"range_m", o.measure.range}, {"pairs_skipped", skipped}};
+    for (size_t w = 0; w < ways.size(); ++w) j[ways[w].key] = countsJson(all[w], ways[w].labeller.nodeLabels());
     Json per_pair = Json::array();
     for (const PairResult& r : results) {
-      per_pair.push_back({{"query", r.query}, {"match", r.match}, {"distance_m", r.distance},
-                          {"file", countsJson(r.file, config.labels)},
-                          {"geometric", countsJson(r.geometric, geometric_labels)}});
+      Json p = {{"query", r.query}, {"match", r.match}, {"distance_m", r.distance}};
+      for (size_t w = 0; w < ways.size(); ++w) p[ways[w].key] = countsJson(r.ways[w], ways[w].labeller.nodeLabels());
+      per_pair.push_back(p);
     }
     j["pairs"] = per_pair;
     Json classes = Json::object();
@@ -190,13 +198,15 @@ void runRepeatability(const RepeatabilityCliOptions& o) {
   std::cout << "node repeatability: share of both scans' nodes with a same-class node of the other within "
             << fixed(o.measure.radius, 2) << " m, nodes within " << fixed(o.measure.range, 0)
             << " m of both sensors\n";
-  printCounts("labels (file)", file_all, config.labels);
-  printCounts("geometric labeller", geometric_all, geometric_labels);
+  for (size_t w = 0; w < ways.size(); ++w) printCounts(ways[w].name, all[w], ways[w].labeller.nodeLabels());
   for (const PairResult& r : results) {
-    std::printf("  %s -> %s  %6.2f m   file %.3f (%d/%d)   geometric %.3f (%d/%d)\n",
-                io::escapeContent(r.query).c_str(), io::escapeContent(r.match).c_str(), r.distance, r.file.share(),
-                r.file.totalRepeated(), r.file.totalNodes(), r.geometric.share(), r.geometric.totalRepeated(),
-                r.geometric.totalNodes());
+    std::printf("  %s -> %s  %6.2f m", io::escapeContent(r.query).c_str(), io::escapeContent(r.match).c_str(),
+                r.distance);
+    for (size_t w = 0; w < ways.size(); ++w) {
+      std::printf("   %s %.3f (%d/%d)", ways[w].key, r.ways[w].share(), r.ways[w].totalRepeated(),
+                  r.ways[w].totalNodes());
+    }
+    std::printf("\n");
   }
   std::printf("label agreement of the geometric labeller with the labels, %zu scans (precision / recall / IoU, "
               "reference points):\n", scans.size());

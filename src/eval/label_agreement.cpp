@@ -25,13 +25,8 @@ ClassMerge classMerge(const std::vector<std::pair<int, int>>& from_to) {
 }
 
 ClassMerge labellerMerge(const LabelConfig& reference) {
-  const LabelMap map(reference);
-  // A preset "has" a class if one of its ids maps to it; nuScenes folds poles and signs into static.manmade.
-  std::array<bool, kMaxClasses> present{};
-  for (uint32_t id = 0; id < 0x10000u; ++id) {
-    const int8_t c = map.classOf(id);
-    if (c >= 0) present[static_cast<size_t>(c)] = true;
-  }
+  // nuScenes folds poles and signs into static.manmade.
+  const std::array<bool, kMaxClasses> present = presentClasses(reference);
   std::vector<std::pair<int, int>> from_to = {{kTrunk, kPole}};
   if (!present[kPole] && present[kBuilding]) {
     from_to = {{kTrunk, kBuilding}, {kPole, kBuilding}, {kTrafficSign, kBuilding}};
