@@ -51,3 +51,26 @@ def test_label_agreement_matches_cli(cli):
     assert building["reference_points"] == tp[0] + fn[0]
     with pytest.raises(ValueError):
         sgtllc.label_agreement(np.array([7.5]), np.array([50]))
+
+
+def test_apply_labeller_sources():
+    points = sgtllc.read_kitti_bin(str(QUERY_BIN))
+    labels = sgtllc.read_labels(str(KITTI / "labels" / "004501.label"))
+    config = sgtllc.Config()
+    np.testing.assert_array_equal(sgtllc.apply_labeller(points, labels, config), labels)
+    config.labeller.source = sgtllc.LabelSource.GEOMETRIC
+    np.testing.assert_array_equal(sgtllc.apply_labeller(points, labels, config), sgtllc.label_scan_ids(points))
+    # A label set without pole and trunk classes (as nuScenes'): hybrid splits them off its building and vegetation.
+    config.labeller.source = sgtllc.LabelSource.HYBRID
+    config.labels.preset = sgtllc.LabelPreset.CUSTOM
+    semantic = labels & 0xFFFF
+    for raw in np.unique(semantic):
+        config.labels.custom_map[int(raw)] = -1
+    for raw, cls in {50: 0, 80: 0, 81: 0, 70: 2, 71: 2}.items():
+        config.labels.custom_map[raw] = cls
+    out = sgtllc.apply_labeller(points, labels, config)
+    assert set(np.unique(out[np.isin(semantic, [50, 80, 81])])) <= {50, 80}
+    assert set(np.unique(out[np.isin(semantic, [70, 71])])) <= {70, 71}
+    thin = np.isin(out, [71, 80])
+    assert thin.sum() > 1000
+    assert np.isin(semantic[thin], [71, 80]).mean() > 0.76  # mostly the scan's true trunks and poles
