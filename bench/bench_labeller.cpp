@@ -12,38 +12,19 @@
 #include <string>
 #include <vector>
 
+#include "sgtllc/eval/label_agreement.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/labels.h"
 
 namespace {
 
-struct Counts {
-  std::array<long, sgtllc::kNumPaperClasses> tp{}, fp{}, fn{};
-};
-
-int merged(int c) { return c == sgtllc::kTrunk ? sgtllc::kPole : c; }
-
-void addCounts(Counts* k, const std::vector<int8_t>& pred, const std::vector<uint32_t>& ref) {
-  const sgtllc::LabelMap map;
-  for (size_t i = 0; i < pred.size(); ++i) {
-    const int p = pred[i] < 0 ? -1 : merged(pred[i]);
-    const int r = map.classOf(ref[i]) < 0 ? -1 : merged(map.classOf(ref[i]));
-    if (p == r && p >= 0) ++k->tp[p];
-    if (p != r && p >= 0) ++k->fp[p];
-    if (p != r && r >= 0) ++k->fn[r];
-  }
-}
-
-void printCounts(const char* title, const Counts& k) {
+void printCounts(const char* title, const sgtllc::eval::ClassAgreement& k) {
   std::printf("%s\n  %-13s %9s %9s %9s %9s\n", title, "class", "precision", "recall", "IoU", "ref pts");
   for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) {
     if (c == sgtllc::kTrunk) continue;
-    const double tp = static_cast<double>(k.tp[c]);
-    const double p = tp + k.fp[c] > 0 ? tp / (tp + k.fp[c]) : 0.0, r = tp + k.fn[c] > 0 ? tp / (tp + k.fn[c]) : 0.0;
-    const double iou = tp + k.fp[c] + k.fn[c] > 0 ? tp / (tp + k.fp[c] + k.fn[c]) : 0.0;
-    std::printf("  %-13s %9.3f %9.3f %9.3f %9ld\n", c == sgtllc::kPole ? "pole+trunk" : sgtllc::kClassNames[c], p, r,
-                iou, k.tp[c] + k.fn[c]);
+    std::printf("  %-13s %9.3f %9.3f %9.3f %9llu\n", c == sgtllc::kPole ? "pole+trunk" : sgtllc::kClassNames[c],
+                k.precision(c), k.recall(c), k.iou(c), static_cast<unsigned long long>(k.referencePoints(c)));
   }
 }
 
@@ -76,7 +57,9 @@ int main(int argc, char** argv) {
     const sgtllc::label::GeometricLabeller labeller;
     // Wall-clock and process CPU time: on a shared machine the CPU time is what one free core would take.
     std::vector<double> times, cpu_times;
-    Counts all;
+    const sgtllc::LabelMap reference_map;
+    const sgtllc::eval::ClassMerge merge = sgtllc::eval::labellerMerge(sgtllc::LabelConfig{});
+    sgtllc::eval::ClassAgreement all;
     size_t points = 0;
     for (const auto& [scan, ref] : inputs) {
       const std::vector<Eigen::Vector3f> cloud = sgtllc::io::readKittiBin(scan);
@@ -90,9 +73,9 @@ int main(int argc, char** argv) {
         times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       }
       if (!ref.empty()) {
-        Counts k;
-        addCounts(&k, out.classes, sgtllc::io::readLabelFile(ref));
-        addCounts(&all, out.classes, sgtllc::io::readLabelFile(ref));
+        sgtllc::eval::ClassAgreement k;
+        k.add(out.classes, sgtllc::eval::stableClasses(sgtllc::io::readLabelFile(ref), reference_map), merge);
+        all.add(k);
         printCounts((scan + " vs " + ref + " (" + std::to_string(cloud.size()) + " points, " +
                      std::to_string(out.segments) + " segments)").c_str(), k);
       }

@@ -19,6 +19,7 @@ void bindResults(py::module_& m);        // results.cpp: MatchResult, FrameResul
 void bindDetector(py::module_& m);       // detector.cpp: LoopDetector, compare_pair, compare_nodes
 void bindIo(py::module_& m);             // io.cpp: KITTI, PCD, node files, poses, calib, sequence folders
 void bindMetrics(py::module_& m);        // metrics.cpp: PR curve, F1max, EP, pose and trajectory errors
+void bindRepeatability(py::module_& m);  // repeatability.cpp: node repeatability, label agreement
 void bindBackend(py::module_& m);        // backend.cpp: the pose-graph optimiser
 void bindAccumulate(py::module_& m);     // accumulate.cpp: ScanAccumulator (scan accumulation)
 void bindMap(py::module_& m);            // map.cpp: Map, load_map, Relocalizer

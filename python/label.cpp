@@ -3,6 +3,7 @@
 // one in sgtllc.pyi.
 #include "arrays.h"
 #include "bindings.h"
+#include "sgtllc/label/cloud_labeller.h"
 #include "sgtllc/label/geometric_labeller.h"
 
 namespace sgtllc::python {
@@ -10,7 +11,8 @@ namespace sgtllc::python {
 void bindLabel(py::module_& m) {
   py::enum_<LabelSource>(m, "LabelSource", "Where the per-point classes come from (labeller.source).")
       .value("FILE", LabelSource::kFile, "the label files read with the scans")
-      .value("GEOMETRIC", LabelSource::kGeometric, "the scan's geometry alone (docs/labeller.md)");
+      .value("GEOMETRIC", LabelSource::kGeometric, "the scan's geometry alone (docs/labeller.md)")
+      .value("HYBRID", LabelSource::kHybrid, "the label files, with poles and trunks their label set lacks split off by geometry");
 
   using G = GroundConfig;
   py::class_<G>(m, "GroundConfig", "Ground segmentation (labeller.ground.*).")
@@ -68,6 +70,23 @@ void bindLabel(py::module_& m) {
       "Geometric labeller (docs/labeller.md): (points (N, 3) or (N, 4), intensity ignored) → (classes (N,) int8:\n"
       "0..6 as the stable classes, never 3 (trunk is merged into pole 5), −1 dropped; ground (N,) uint8).\n"
       "NaN/Inf points are dropped, never an error.");
+  m.def(
+      "apply_labeller",
+      [](const py::handle& points, const py::handle& labels, const Config& config) {
+        LabeledCloud cloud = cloudFromArrays(points, labels, "", true);
+        const label::CloudLabeller labeller(config.labels, config.labeller);
+        {
+          py::gil_scoped_release release;
+          if (labeller.changesLabels()) cloud = labeller.apply(std::move(cloud));
+        }
+        const auto n = static_cast<py::ssize_t>(cloud.labels.size());
+        return vectorToArray(std::move(cloud.labels), {n});
+      },
+      py::arg("points"), py::arg("labels"), py::arg("config"),
+      "The raw ids the node extraction sees under config.labeller.source ((N,) uint32): the labels as given for\n"
+      "file, SemanticKITTI ids from the geometry for geometric (labels ignored), and for hybrid the labels with the\n"
+      "poles and trunks their label set lacks split off by geometry (docs/labeller.md §6). A LoopDetector or\n"
+      "compare_pair with the same config reads them as they are meant (SemanticKITTI ids for geometric and hybrid).");
   m.def(
       "label_scan_ids",
       [](const py::handle& points, const LabellerConfig& config) {

@@ -53,6 +53,7 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindDetector(m);
   sgtllc::python::bindIo(m);
   sgtllc::python::bindMetrics(m);
+  sgtllc::python::bindRepeatability(m);
   sgtllc::python::bindRelocalization(m);
   sgtllc::python::bindBackend(m);
   sgtllc::python::bindAccumulate(m);

@@ -35,7 +35,7 @@ class NodeScore(Enum):
 class ScoreFormula(Enum):
     PAPER: int; LEGACY: int; OVERLAP: int
 class LabelSource(Enum):
-    FILE: int; GEOMETRIC: int
+    FILE: int; GEOMETRIC: int; HYBRID: int
 class RefinementStatus(Enum):
     CONVERGED: int; MAX_ITERATIONS: int; TOO_FEW_POINTS: int; DEGENERATE: int; LOW_FITNESS: int; MOVED_TOO_FAR: int
 class RobustLoss(Enum):
@@ -347,6 +347,7 @@ class RelocalizationTracker:
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
 def label_scan_ids(points: ArrayLike, config: LabellerConfig = ...) -> np.ndarray: ...  # (N,) uint32 SemanticKITTI ids
+def apply_labeller(points: ArrayLike, labels: ArrayLike, config: Config) -> np.ndarray: ...  # (N,) uint32 ids as the node extraction sees them
 def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32
 def read_labels(path: str) -> np.ndarray: ...  # (N,) uint32
 def default_label_path(bin_path: str) -> str: ...
@@ -367,6 +368,26 @@ class SequenceDir:
     def label_path(self, i: int) -> str: ...
     def frame_name(self, i: int) -> str: ...
     def load(self, i: int) -> Tuple[np.ndarray, np.ndarray]: ...
+
+# --- node repeatability and label agreement (repeatability.cpp) ---
+class NodeRepeatability:
+    nodes: np.ndarray        # (16,) int64 per class index
+    repeated: np.ndarray
+    other_class: np.ndarray
+    @overload
+    def share(self) -> float: ...
+    @overload
+    def share(self, class_index: int) -> float: ...
+def node_repeatability(a_centres: ArrayLike, a_classes: ArrayLike, b_centres: ArrayLike, b_classes: ArrayLike,
+                       T_b_a: ArrayLike, radius: float = 0.5, range: float = 40.0) -> NodeRepeatability: ...
+class ClassAgreement:
+    tp: np.ndarray           # (16,) int64 per class index
+    fp: np.ndarray
+    fn: np.ndarray
+    def precision(self, class_index: int) -> float: ...
+    def recall(self, class_index: int) -> float: ...
+    def iou(self, class_index: int) -> float: ...
+def label_agreement(predicted: ArrayLike, reference: ArrayLike, reference_labels: LabelConfig = ...) -> ClassAgreement: ...
 
 # --- metrics (metrics.cpp) ---
 class PrCurve:

@@ -4,13 +4,14 @@
 
 #include "config_ranges.h"
 #include "sgtllc/config.h"
+#include "sgtllc/labels.h"
 
 namespace sgtllc {
 
 using namespace detail;
 
 void validateLabellerConfig(const LabellerConfig& l, const LabelConfig& labels) {
-  if (l.source != LabelSource::kFile && l.source != LabelSource::kGeometric) {
+  if (l.source != LabelSource::kFile && l.source != LabelSource::kGeometric && l.source != LabelSource::kHybrid) {
     throw ConfigError("labeller.source", "labeller.source: unknown value");
   }
   const GroundConfig& g = l.ground;
@@ -52,15 +53,24 @@ void validateLabellerConfig(const LabellerConfig& l, const LabelConfig& labels) 
   checkReal("labeller.segments.min_wall_share", s.min_wall_share, {0.0}, {1.0});
   checkReal("labeller.segments.min_fence_wall_share", s.min_fence_wall_share, {0.0}, {1.0});
   checkReal("labeller.segments.min_scatter_share", s.min_scatter_share, {0.0}, {1.0});
-  if (l.source == LabelSource::kGeometric && !labels.extra_classes.empty()) {
-    throw ConfigError("labeller.source", "labeller.source geometric gives only the paper's seven classes; "
+  if (l.source != LabelSource::kFile && !labels.extra_classes.empty()) {
+    throw ConfigError("labeller.source", std::string("labeller.source ") +
+                                             (l.source == LabelSource::kGeometric ? "geometric" : "hybrid") +
+                                             " gives only the paper's seven classes; "
                                          "labels.extra_classes must be empty (it has " +
                                              std::to_string(labels.extra_classes.size()) + ")");
   }
 }
 
 LabelConfig effectiveLabelConfig(const Config& config) {
-  return config.labeller.source == LabelSource::kGeometric ? LabelConfig{} : config.labels;
+  switch (config.labeller.source) {
+    case LabelSource::kGeometric:
+      return LabelConfig{};
+    case LabelSource::kHybrid:
+      return hybridSplits(config.labels).any() ? LabelConfig{} : config.labels;
+    default:
+      return config.labels;
+  }
 }
 
 }  // namespace sgtllc

@@ -68,4 +68,19 @@ LabelMap::LabelMap(const LabelConfig& config) : table_(kTableSize, kDropped), kn
   }
 }
 
+std::array<bool, kMaxClasses> presentClasses(const LabelConfig& labels) {
+  const LabelMap map(labels);
+  std::array<bool, kMaxClasses> present{};
+  for (uint32_t id = 0; id < 0x10000u; ++id) {
+    const int8_t c = map.classOf(id);
+    if (c >= 0) present[static_cast<size_t>(c)] = true;
+  }
+  return present;
+}
+
+HybridSplits hybridSplits(const LabelConfig& labels) {
+  const std::array<bool, kMaxClasses> present = presentClasses(labels);
+  return {!present[kPole] && present[kBuilding], !present[kTrunk] && present[kVegetation]};
+}
+
 }  // namespace sgtllc

@@ -14,5 +14,6 @@ void addOptimizeCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addLocalizeCommand(CLI::App& app);
 void addMapCommand(CLI::App& app);
+void addRepeatabilityCommand(CLI::App& app);
 
 }  // namespace sgtllc::cli

@@ -11,7 +11,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
-#include "sgtllc/label/geometric_labeller.h"
+#include "sgtllc/label/cloud_labeller.h"
 
 namespace fs = std::filesystem;
 
@@ -26,10 +26,12 @@ Config loadConfigOption(const std::string& path, int threads, const std::string&
   Config config = path.empty() ? Config{} : io::loadConfig(path);
   if (labeller == "geometric") {
     config.labeller.source = LabelSource::kGeometric;
+  } else if (labeller == "hybrid") {
+    config.labeller.source = LabelSource::kHybrid;
   } else if (labeller == "file") {
     config.labeller.source = LabelSource::kFile;
   } else if (!labeller.empty()) {
-    throw Error("--labeller " + labeller + ": expected file or geometric");
+    throw Error("--labeller " + labeller + ": expected file, geometric or hybrid");
   }
   if (threads > 0) {
     config.threads = threads;
@@ -62,14 +64,9 @@ double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field,
-                      const Config& config) {
+/// A scan with the labels of its file, as read.
+LabeledCloud loadLabelledScan(const std::string& path, const std::string& label_path, const std::string& label_field) {
   const std::string ext = fs::path(path).extension().string();
-  if (config.labeller.source == LabelSource::kGeometric) {
-    // The scan alone: no label file is opened (docs/labeller.md).
-    if (!label_path.empty()) throw Error(path + ": --labeller geometric reads no label file; drop the label option");
-    return label::labelCloud(readScanPoints(path), label::GeometricLabeller(config.labeller));
-  }
   if (ext == ".pcd") {
     if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");
     return io::readPcd(path, label_field);
@@ -78,6 +75,17 @@ LabeledCloud loadScan(const std::string& path, const std::string& label_path, co
     throw Error(path + ": unknown input format '" + ext + "' (expected a KITTI .bin, a .pcd or a .txt node file)");
   }
   return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path);
+}
+
+LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field,
+                      const Config& config) {
+  const label::CloudLabeller labeller(config.labels, config.labeller);
+  if (!labeller.readsLabelFiles()) {
+    // The scan alone: no label file is opened (docs/labeller.md).
+    if (!label_path.empty()) throw Error(path + ": --labeller geometric reads no label file; drop the label option");
+    return labeller.apply({readScanPoints(path), {}});
+  }
+  return labeller.apply(loadLabelledScan(path, label_path, label_field));
 }
 
 }  // namespace
@@ -110,9 +118,10 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
 
 void addLabellerOption(CLI::App* cmd, std::string* labeller) {
   cmd->add_option("--labeller", *labeller,
-                  "per-point classes: file (the label files) or geometric (from the scan alone, docs/labeller.md); "
+                  "per-point classes: file (the label files), geometric (from the scan alone) or hybrid (the label "
+                  "files, with the poles and trunks their label set lacks split off by geometry; docs/labeller.md); "
                   "default: the config's labeller.source")
-      ->check(CLI::IsMember({"file", "geometric"}));
+      ->check(CLI::IsMember({"file", "geometric", "hybrid"}));
 }
 
 void checkWritable(const std::string& path, bool force) { io::checkOutputFile(path, io::overwriteIf(force)); }

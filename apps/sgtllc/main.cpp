@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   sgtllc::cli::addSimulateCommand(app);
   sgtllc::cli::addLocalizeCommand(app);
   sgtllc::cli::addMapCommand(app);
+  sgtllc::cli::addRepeatabilityCommand(app);
   sgtllc::cli::addConfigCommand(app);
   std::string& line = sgtllc::cli::commandLine();
   line = "sgtllc";

@@ -3,6 +3,7 @@
 ///        configuration's extra classes.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -29,5 +30,18 @@ class LabelMap {
   std::vector<int8_t> table_;
   std::vector<uint8_t> known_;
 };
+
+/// For each stable class index, whether an id of @p labels' label space maps to it (nuScenes-lidarseg has no pole,
+/// trunk or traffic-sign class, for instance).
+std::array<bool, kMaxClasses> presentClasses(const LabelConfig& labels);
+
+/// What labeller.source hybrid splits off by geometry for the label set @p labels (docs/labeller.md §6): poles
+/// from its building class when it has no pole class, trunks from its vegetation class when it has no trunk class.
+struct HybridSplits {
+  bool pole = false;
+  bool trunk = false;
+  bool any() const { return pole || trunk; }
+};
+HybridSplits hybridSplits(const LabelConfig& labels);
 
 }  // namespace sgtllc

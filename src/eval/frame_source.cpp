@@ -10,7 +10,7 @@
 #include "sgtllc/graph.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/sequence.h"
-#include "sgtllc/label/geometric_labeller.h"
+#include "sgtllc/label/cloud_labeller.h"
 #include "sgtllc/parallel.h"
 
 namespace fs = std::filesystem;
@@ -26,13 +26,12 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config,
                                        const FrameSourceOptions& options) {
-  const bool geometric = config.labeller.source == LabelSource::kGeometric;
+  auto labeller = std::make_shared<const label::CloudLabeller>(config.labels, config.labeller);
+  const bool geometric = !labeller->readsLabelFiles();
   auto seq = std::make_shared<io::SequenceDir>(dir, io::SequenceLabels{!geometric, options.labels_dir});
-  const LabelConfig labels = effectiveLabelConfig(config);
+  const LabelConfig& labels = labeller->nodeLabels();
   auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
   auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only
-  std::shared_ptr<const label::GeometricLabeller> labeller;
-  if (geometric) labeller = std::make_shared<const label::GeometricLabeller>(config.labeller);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
   source.read_ = [seq, geometric](size_t i) {
@@ -47,8 +46,8 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
     LabeledCloud labelled;
-    if (labeller) labelled = label::labelCloud(input.points, *labeller);
-    const LabeledCloud& cloud = labeller ? labelled : input;
+    if (labeller->changesLabels()) labelled = labeller->apply(input);
+    const LabeledCloud& cloud = labeller->changesLabels() ? labelled : input;
     NodeExtractionResult r = extractor->extract(cloud);
     f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
     f.nodes = std::move(r.nodes);

@@ -246,9 +246,9 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(customMap());
   f.push_back(extraClasses());
   f.push_back(choice<LabelSource>("labeller.source",
-                                  "per-point classes from the label files or from the scan's geometry (docs/labeller.md)",
+                                  "per-point classes from the label files, the scan's geometry, or both (hybrid) (docs/labeller.md)",
                                   [](Config& c) -> LabelSource& { return c.labeller.source; },
-                                  {{"file", LabelSource::kFile}, {"geometric", LabelSource::kGeometric}}));
+                                  {{"file", LabelSource::kFile}, {"geometric", LabelSource::kGeometric}, {"hybrid", LabelSource::kHybrid}}));
   const BackendFieldMakers makers{[&f](auto k, auto c, auto r) { f.push_back(number(k, c, r)); },
                                   [&f](auto k, auto c, auto r) { f.push_back(integer<int>(k, c, r)); },
                                   [&f](auto k, auto c, auto r, auto n) { f.push_back(choice(k, c, r, n)); },

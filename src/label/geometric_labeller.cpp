@@ -179,13 +179,17 @@ Labelling GeometricLabeller::classify(const std::vector<Eigen::Vector3f>& points
   return out;
 }
 
-std::vector<uint32_t> semanticKittiIds(const Labelling& labelling) {
+uint32_t semanticKittiId(int c) {
   static constexpr uint32_t kIds[kNumPaperClasses] = {50, 51, 70, 71, 72, 80, 81};
+  return c >= 0 && c < kNumPaperClasses ? kIds[c] : 0;
+}
+
+std::vector<uint32_t> semanticKittiIds(const Labelling& labelling) {
   std::vector<uint32_t> ids(labelling.classes.size(), 0);
   for (size_t i = 0; i < ids.size(); ++i) {
     const int8_t c = labelling.classes[i];
     if (c >= 0 && c < kNumPaperClasses) {
-      ids[i] = kIds[c];
+      ids[i] = semanticKittiId(c);
     } else if (labelling.ground[i]) {
       ids[i] = 40;
     }

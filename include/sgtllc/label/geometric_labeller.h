@@ -46,6 +46,10 @@ class GeometricLabeller {
   LabellerConfig config_;
 };
 
+/// SemanticKITTI raw id of stable class @p c of the paper's seven (building 50 … traffic-sign 81); 0 (unlabeled)
+/// for any other value.
+uint32_t semanticKittiId(int c);
+
 /// SemanticKITTI raw id of a labelled point (the .label convention, LabelPreset::kSemanticKittiRaw): building 50,
 /// fence 51, vegetation 70, trunk 71, terrain 72, pole 80, traffic-sign 81; other ground 40 (road), anything else
 /// dropped 0 (unlabeled).

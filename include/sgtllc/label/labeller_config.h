@@ -9,6 +9,9 @@ namespace sgtllc {
 enum class LabelSource {
   kFile,       ///< labels read with the scan (KITTI .label, PCD label field), mapped by LabelConfig [default]
   kGeometric,  ///< the scan's geometry alone: label::GeometricLabeller (docs/labeller.md); no label file is read
+  /// the label files, with the classes their label set lacks (pole, trunk) split off by the geometric labeller
+  /// (label::CloudLabeller, docs/labeller.md §6)
+  kHybrid,
 };
 
 /// Ground segmentation (docs/labeller.md §1): a polar grid of sectors × range bins; each sector's lowest points are
