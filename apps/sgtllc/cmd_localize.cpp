@@ -81,7 +81,8 @@ std::string hitsCsv(const std::vector<Hit>& hits) {
 /// One line per query; the frame names come from a folder's file names and from the map file, so they are escaped
 /// (quote.h) before they reach the terminal.
 std::string hitLine(const Hit& h) {
-  const std::string query = io::escapeContent(h.query), map_frame = io::escapeContent(h.map_frame);
+  const std::string query = io::escapeContent(h.query, io::kNameBytes);
+  const std::string map_frame = io::escapeContent(h.map_frame, io::kNameBytes);
   if (h.map_frame.empty()) return query + ": no map frame verified";
   const Eigen::Vector3d t = h.r.T_mapframe_query.topRightCorner<3, 1>();
   std::string line = query + (h.r.localized ? " -> " : " ?> ") + map_frame + "  score " + fixed(h.r.score, 3) +

@@ -50,7 +50,8 @@ void mapInfo(const std::string& path, bool json) {
             << " bytes\n"
             << "frames " << m.size() << " (" << (m.hasPoses() ? "with poses" : "no poses") << ")";
   if (m.size() > 0) {
-    std::cout << ", first " << escapeContent(m.names.front()) << ", last " << escapeContent(m.names.back()) << "\n"
+    std::cout << ", first " << escapeContent(m.names.front(), io::kNameBytes) << ", last "
+              << escapeContent(m.names.back(), io::kNameBytes) << "\n"
               << "nodes " << nodes << " (" << fixed(static_cast<double>(nodes) / m.size(), 1) << " per frame), key "
               << m.database.globalDimension() << " floats, " << fixed(per_frame, 0) << " bytes per frame";
   }
