@@ -3,10 +3,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "sgtllc/io/config_yaml.h"
 #include "test_config_support.h"
+#include "test_support.h"
 
 namespace sgtllc {
 namespace {
@@ -52,6 +55,15 @@ TEST(ConfigYamlAliases, AmpersandsAndStarsInQuotesAndCommentsAreText) {
   // Not anchors: a comment, and a quoted name (here an unknown key, which says so instead).
   EXPECT_EQ(errorOf("# &a *a\nthreads: 2  # *b\n"), "(no error)");
   EXPECT_THAT(errorOf("\"&a *a\": 1\n"), HasSubstr("unknown key '&a *a'"));
+}
+
+// A fuzzer's input after which yaml-cpp's event parser reported new documents without end: only the first document
+// is checked, as only the first is loaded (the file is a bundled config with bytes changed after its keys).
+TEST(ConfigYamlAliases, MalformedTextAfterTheFirstDocumentEnds) {
+  std::ifstream in(test::dataPath("../fuzz/regressions/config_yaml/endless_documents.yaml"), std::ios::binary);
+  ASSERT_TRUE(in);
+  const std::string yaml(std::istreambuf_iterator<char>(in), {});
+  EXPECT_EQ(errorOf(yaml), "(no error)");
 }
 
 TEST(ConfigYamlSuggest, ATypoGetsTheNearestKey) {
