@@ -1,7 +1,7 @@
 # The two commands of the README: `make demo` and `make test`. Both install missing Debian packages first.
 # `make kitti00-loops` / `make kitti00`: loop detection / drift correction on all of KITTI 00 (object frames).
-# The reliability checks (README "Reliability checks"): `make test-sanitize`, `make test-tsan` and `make fuzz`,
-# each a clang build in a directory of its own.
+# The reliability checks (README "Reliability checks"): `make test-sanitize`, `make test-tsan` and `make fuzz`
+# (`make fuzz-long` before a release), each a clang build in a directory of its own.
 BUILD ?= build
 JOBS ?= 2
 CMAKE_FLAGS ?=
@@ -19,7 +19,7 @@ KITTI = data/kitti/00/velodyne
 KITTI00 = $(BUILD)/kitti00
 KITTI00_CONFIG = configs/kitti00-objects.yaml
 
-.PHONY: all deps configure build demo test bench test-sanitize test-tsan fuzz clean kitti00 kitti00-loops
+.PHONY: all deps configure build demo test bench test-sanitize test-tsan fuzz fuzz-long clean kitti00 kitti00-loops
 
 all: build
 
@@ -97,6 +97,11 @@ fuzz:
 	@$(MAKE) --no-print-directory build BUILD=build-fuzz DEPS_FLAGS=--dev TARGETS=sgtllc_fuzz \
 	  CMAKE_FLAGS="$(CLANG_FLAGS) -DSGTLLC_FUZZ=ON -DSGTLLC_BUILD_APPS=OFF -DSGTLLC_BUILD_TESTS=OFF $(CMAKE_FLAGS)"
 	@fuzz/run.sh build-fuzz $(FUZZ_SECONDS) $(FUZZ_HARNESSES)
+
+# Before a release: every harness for 600 s, or for FUZZ_SECONDS given on the command line (CI keeps 30 s each).
+FUZZ_LONG_SECONDS = $(if $(filter command line environment,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),600)
+fuzz-long:
+	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=$(FUZZ_LONG_SECONDS)
 
 clean:
 	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-tsan build-fuzz build-*.configure.log

@@ -1,15 +1,17 @@
-// io::quoteContent: file content repeated in a message reaches the terminal as visible text, never as control bytes
-// (issue 15, defect 6), and the readers use it.
+// io::quoteContent: file content repeated in a message reaches the terminal as visible text, never as control bytes,
+// and the readers use it.
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "sgtllc/eval/pair_eval.h"
+#include "sgtllc/io/g2o.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
 #include "sgtllc/io/quote.h"
+#include "sgtllc/sim/manifest.h"
 #include "test_io_support.h"
 
 namespace sgtllc::io {
@@ -44,6 +46,14 @@ TEST(IoQuoted, LongContentIsCutAtACharacterBoundary) {
   EXPECT_EQ(escapeContent(std::string(10, 'y'), 4), "yyyy... (10 bytes)");
 }
 
+TEST(IoQuoted, EscapeControlsLeavesSafeTextAlone) {
+  EXPECT_EQ(escapeControls("dir/\x1b[31m.txt:1: bad\n\tnext"), "dir/\\x1b[31m.txt:1: bad\n\tnext");
+  EXPECT_EQ(escapeControls("\r\x7f\xc2\x9b\xff b\xc3\xa2t"), "\\x0d\\x7f\\xc2\\x9b\\xff b\xc3\xa2t");
+  // Text quoteContent made safe (backslashes, quotes) comes back unchanged: no double escaping.
+  const std::string quoted = "f: " + quoteContent("it's \x1b\\ \x1b[2J");
+  EXPECT_EQ(escapeControls(quoted), quoted);
+}
+
 class IoQuotedReaders : public test::TempDirTest {};
 
 // Each reader that repeats file content in a message sends it through quoteContent(): no raw ESC reaches stderr.
@@ -64,12 +74,18 @@ TEST_F(IoQuotedReaders, MessagesCarryNoRawControlBytes) {
   const std::string nodes = write("n.txt", "1 2 " + esc + " 50\n");
   const std::string poses = write("poses.txt", "1 0 0 0 0 1 0 0 0 0 1 " + esc + "\n");
   const std::string pairs = write("pairs.txt", "1 0 " + esc + "\n");
+  const std::string g2o = write("g.g2o", esc + " 0 0 0 0 0 0 0 1\n");
+  const std::string g2o_value = write("v.g2o", "VERTEX_SE3:QUAT 0 0 0 " + esc + " 0 0 0 1\n");
   const std::string texts[] = {
       message([&] { readPcd(pcd); }),
       message([&] { readPcd(pcd_data); }),
       message([&] { readNodesTxt(nodes, LabelMap()); }),
       message([&] { readKittiPoses(poses); }),
       message([&] { eval::readPairList(pairs); }),
+      message([&] { readG2o(g2o); }),
+      message([&] { readG2o(g2o_value); }),
+      message([&] { sim::parseManifest(esc + "\n", "simulation.txt"); }),
+      message([&] { sim::parseManifest("format " + esc + "\n", "simulation.txt"); }),
   };
   for (const std::string& t : texts) {
     EXPECT_THAT(t, HasSubstr("\\x1b[31mred'"));

@@ -1,5 +1,5 @@
 // `sgtllc localize --map MAP SEQ_DIR` / `--nodes NODE_DIR`: where is each frame of a sequence in a saved map?
-// Nothing is inserted into the map, and every map frame is eligible (issue 10 item 2; map/relocalizer.h).
+// Nothing is inserted into the map, and every map frame is eligible (map/relocalizer.h).
 #include <charconv>
 #include <iostream>
 #include <memory>
@@ -8,6 +8,8 @@
 #include "common.h"
 #include "localization.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/io/csv.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/map/map_file.h"
 #include "sgtllc/map/relocalizer.h"
 
@@ -53,7 +55,10 @@ std::string hitsCsv(const std::vector<Hit>& hits) {
   for (const Hit& h : hits) {
     const bool found = !h.map_frame.empty();
     const Candidate* best = found ? &h.r.search.candidates[static_cast<size_t>(h.r.search.best)] : nullptr;
-    out += h.query + "," + h.map_frame + "," + (h.r.localized ? "1" : "0") + ",";
+    io::appendCsvField(out, h.query);
+    out += ',';
+    io::appendCsvField(out, h.map_frame);
+    out += std::string(",") + (h.r.localized ? "1" : "0") + ",";
     appendShortestCsv(out, h.r.score);
     out += ',';
     appendShortestCsv(out, best ? best->match.score_c : 0.0);
@@ -73,10 +78,14 @@ std::string hitsCsv(const std::vector<Hit>& hits) {
   return out;
 }
 
+/// One line per query; the frame names come from a folder's file names and from the map file, so they are escaped
+/// (quote.h) before they reach the terminal.
 std::string hitLine(const Hit& h) {
-  if (h.map_frame.empty()) return h.query + ": no map frame verified";
+  const std::string query = io::escapeContent(h.query, io::kNameBytes);
+  const std::string map_frame = io::escapeContent(h.map_frame, io::kNameBytes);
+  if (h.map_frame.empty()) return query + ": no map frame verified";
   const Eigen::Vector3d t = h.r.T_mapframe_query.topRightCorner<3, 1>();
-  std::string line = h.query + (h.r.localized ? " -> " : " ?> ") + h.map_frame + "  score " + fixed(h.r.score, 3) +
+  std::string line = query + (h.r.localized ? " -> " : " ?> ") + map_frame + "  score " + fixed(h.r.score, 3) +
                      "  t = (" + fixed(t.x(), 2) + ", " + fixed(t.y(), 2) + ", " + fixed(t.z(), 2) + ") m";
   if (h.r.T_world_query) {
     const Eigen::Vector3d w = h.r.T_world_query->topRightCorner<3, 1>();

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/map/map_file.h"
 
 namespace sgtllc::cli {
@@ -43,21 +44,26 @@ void mapInfo(const std::string& path, bool json) {
               << "\n";
     return;
   }
+  // Frame names, section tags and configuration text are the file's bytes: escaped before they reach the terminal.
+  using io::escapeContent;
   std::cout << "map " << path << ": format version " << layout.format_version << ", " << layout.file_bytes
             << " bytes\n"
             << "frames " << m.size() << " (" << (m.hasPoses() ? "with poses" : "no poses") << ")";
   if (m.size() > 0) {
-    std::cout << ", first " << m.names.front() << ", last " << m.names.back() << "\n"
+    std::cout << ", first " << escapeContent(m.names.front(), io::kNameBytes) << ", last "
+              << escapeContent(m.names.back(), io::kNameBytes) << "\n"
               << "nodes " << nodes << " (" << fixed(static_cast<double>(nodes) / m.size(), 1) << " per frame), key "
               << m.database.globalDimension() << " floats, " << fixed(per_frame, 0) << " bytes per frame";
   }
   std::cout << "\nconfiguration fingerprint " << hex(layout.fingerprint) << "\nsections:\n";
   for (const map::SectionInfo& s : layout.sections) {
-    std::cout << "  " << s.tag << " v" << s.version << "  " << s.bytes << " bytes"
+    std::cout << "  " << escapeContent(s.tag) << " v" << s.version << "  " << s.bytes << " bytes"
               << (s.known ? "" : "  (not known to this version: skipped)") << "\n";
   }
   std::cout << "configuration (these must equal a localize or resume configuration's):\n";
-  for (const auto& [key, value] : m.config) std::cout << "  " << key << ": " << value << "\n";
+  for (const auto& [key, value] : m.config) {
+    std::cout << "  " << escapeContent(key) << ": " << escapeContent(value, 1024) << "\n";
+  }
 }
 
 }  // namespace

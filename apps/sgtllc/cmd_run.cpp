@@ -12,6 +12,7 @@
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
 #include "sgtllc/io/output_file.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/map/map_file.h"
 
 namespace sgtllc::cli {
@@ -67,7 +68,7 @@ std::vector<Eigen::Matrix4d> sequencePoses(const RunOptions& o, const eval::Fram
   const eval::GroundTruth truth = eval::GroundTruth::fromKitti(truth_path, calib);
   for (size_t i = 0; i < source.size(); ++i) {
     if (!truth.has(source.number(i))) {
-      throw Error(truth_path + ": no pose for frame " + source.name(i) + " (" + std::to_string(truth.size()) +
+      throw Error(truth_path + ": no pose for frame " + io::quoteContent(source.name(i)) + " (" + std::to_string(truth.size()) +
                   " lines; frames must be named by their line number), so --save-map cannot place the frames; "
                   "give --odometry");
     }
@@ -125,7 +126,8 @@ void runSequence(const RunOptions& o) {
       if (!o.json) {
         progress.clear();
         const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();
-        std::cout << "loop " << l.query << " -> " << l.match << "  score " << fixed(l.score, 3) << "  score_c "
+        std::cout << "loop " << io::escapeContent(l.query, io::kNameBytes) << " -> "
+                  << io::escapeContent(l.match, io::kNameBytes) << "  score " << fixed(l.score, 3) << "  score_c "
                   << fixed(l.score_c, 3) << "  t = (" << fixed(t.x(), 2) << ", " << fixed(t.y(), 2) << ", "
                   << fixed(t.z(), 2) << ") m" << (r.lateral ? "  lateral (a neighbour of the revisit)" : "") << "\n"
                   << std::flush;

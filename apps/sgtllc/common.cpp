@@ -11,6 +11,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/label/cloud_labeller.h"
 
 namespace fs = std::filesystem;
@@ -136,7 +137,8 @@ void writeOutput(const std::string& path, const std::string& text, bool force) {
   io::writeFileAtomically(path, text, io::overwriteIf(force));
 }
 
-void warnAboutInput(const std::string& name, const ExtractionStats& stats, int num_nodes, const char* unit) {
+void warnAboutInput(const std::string& frame, const ExtractionStats& stats, int num_nodes, const char* unit) {
+  const std::string name = io::escapeContent(frame, io::kNameBytes);  // a file name found in a folder
   if (stats.nonfinite_points > 0) {
     std::cerr << "warning: " << name << ": dropped " << stats.nonfinite_points
               << " points with NaN or Inf coordinates\n";
@@ -168,7 +170,7 @@ void UnknownLabels::add(const std::string& frame, size_t points) {
 void UnknownLabels::warn() const {
   if (points_ == 0) return;
   std::cerr << "warning: ignored " << points_ << " points in " << frames_ << " of " << seen_ << " frames (first: "
-            << first_ << ") whose label id is not in the configured label set (labels.preset)\n";
+            << io::escapeContent(first_, io::kNameBytes) << ") whose label id is not in the configured label set (labels.preset)\n";
 }
 
 Json matrixJson(const Eigen::Matrix4d& T) {

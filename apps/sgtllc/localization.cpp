@@ -2,6 +2,8 @@
 
 #include <unordered_map>
 
+#include "sgtllc/io/quote.h"
+
 namespace sgtllc::cli {
 namespace {
 
@@ -40,7 +42,8 @@ std::vector<Hit> localizeSequence(const eval::FrameSource& source, const map::Re
     // Two sessions that both number their frames 000000, … do not clash: only the same name with the same nodes.
     const auto same = map_frames.find(source.name(index));
     if (same != map_frames.end() && sameNodes(frame.nodes, m.database.nodes(same->second))) {
-      throw Error(query_name + ": frame " + source.name(index) + " is frame " + source.name(index) + " of map " +
+      const std::string name = io::escapeContent(source.name(index), io::kNameBytes);  // a file name
+      throw Error(query_name + ": frame " + name + " is frame " + name + " of map " +
                   map_path + " (same name, same nodes): the query sequence is the map's own session. Localize "
                   "another session of the same place, or build the map from another one");
     }

@@ -7,6 +7,7 @@
 #include "build_info.h"
 #include "commands.h"
 #include "common.h"
+#include "sgtllc/io/quote.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC)"};
@@ -31,7 +32,8 @@ int main(int argc, char** argv) {
     // CLI11 prints the message (or the help); every command-line mistake exits with 2.
     return app.exit(e) == 0 ? 0 : sgtllc::cli::kExitUsage;
   } catch (const std::exception& e) {
-    std::cerr << "sgtllc: error: " << e.what() << "\n";
+    // Readers quote the content they repeat; a path built from a folder's file names may still hold control bytes.
+    std::cerr << "sgtllc: error: " << sgtllc::io::escapeControls(e.what()) << "\n";
     return sgtllc::cli::kExitFailure;
   }
   return 0;

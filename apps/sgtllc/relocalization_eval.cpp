@@ -9,6 +9,7 @@
 #include "sgtllc/eval/metric_text.h"
 #include "sgtllc/eval/relocalization.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/map/map_file.h"
 
 namespace fs = std::filesystem;
@@ -67,7 +68,7 @@ void evalRelocalization(const std::string& map_path, const std::string& sequence
   const auto on_hit = [&](size_t index, const Hit& h) {
     eval::RelocalizationQuery q;
     q.query_number = source.number(index);
-    if (q.query_number < 0) throw Error(query_name + ": frame " + source.name(index) + " is not a frame number");
+    if (q.query_number < 0) throw Error(query_name + ": frame " + io::quoteContent(source.name(index)) + " is not a frame number");
     q.map_frame = h.r.map_frame;
     q.accepted = h.r.localized;
     q.score = h.r.score;

@@ -6,6 +6,7 @@
 
 #include "report_plots.h"
 #include "sgtllc/eval/metric_text.h"
+#include "sgtllc/io/csv.h"
 
 namespace fs = std::filesystem;
 
@@ -52,7 +53,7 @@ std::string prCsv(const std::vector<std::pair<std::string, const CurveMetrics*>>
   s << "curve,positive_distance_m,threshold,precision,recall\n";
   for (const auto& [name, c] : curves) {
     for (size_t k = 0; k < c->curve.precision.size(); ++k) {
-      s << name << "," << c->positive_distance << ",";
+      s << io::csvField(name) << "," << c->positive_distance << ",";
       if (k < c->curve.thresholds.size()) s << c->curve.thresholds[k];
       s << "," << c->curve.precision[k] << "," << c->curve.recall[k] << "\n";
     }
@@ -118,7 +119,7 @@ std::string f1Ep(const CurveMetrics& c) {
   return metricText(c.f1_max, c.defined(), 4) + " / " + metricText(c.ep, c.defined(), 4);
 }
 
-/// The top-1 protocol with its distance bands (issue 13 item 6).
+/// The top-1 protocol with its distance bands.
 std::string top1Section(const SequenceMetrics& m, const EvalOptions& options) {
   const std::string pos = fixed(options.positive_distances.at(0), 0), neg = fixed(options.negative_distance, 0);
   const Top1Counts& c = m.top1_counts;
@@ -161,9 +162,10 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   curves.emplace_back("top1_score_only", &m.top1_score_only);
   out.text("pr_curve.csv", prCsv(curves));
 
-  // Every frame column holds the frame's name (its file stem, e.g. 000395), as the `frame` column always did.
+  // Every frame column holds the frame's name (its file stem, e.g. 000395), as the `frame` column always did, as
+  // a CSV field (csv.h: a file name may hold a comma).
   std::map<long, std::string> names;
-  for (const FrameRecord& f : run.frames) names.emplace(f.frame, f.name);
+  for (const FrameRecord& f : run.frames) names.emplace(f.frame, io::csvField(f.name));
   const auto name = [&names](long frame) {
     const auto it = names.find(frame);
     return it != names.end() ? it->second : std::to_string(frame);
@@ -173,7 +175,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
             "retrieval_ms,verification_ms,db_bytes,loop_rte_m,loop_rre_deg\n";
   for (const FrameRecord& f : run.frames) {
     const CandidateRecord* best = f.best >= 0 ? &f.candidates[static_cast<size_t>(f.best)] : nullptr;
-    frames << f.name << "," << f.num_nodes << "," << f.queried << "," << f.has_revisit << "," << f.is_loop << ","
+    frames << io::csvField(f.name) << "," << f.num_nodes << "," << f.queried << "," << f.has_revisit << "," << f.is_loop << ","
            << (best ? name(best->frame) : "") << "," << (best ? best->score_t : 0.0) << ","
            << (best ? best->distance : 0.0) << "," << f.timing.extraction_ms << "," << f.timing.description_ms << ","
            << f.timing.retrieval_ms << "," << f.timing.verification_ms << "," << f.db_bytes << ",";
@@ -187,7 +189,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   pairs << "query,candidate,distance_m,score,score_c,rejection,estimated_distance_m,retrieved\n";
   for (const FrameRecord& f : run.frames) {
     for (const CandidateRecord& c : f.candidates) {
-      pairs << f.name << "," << name(c.frame) << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
+      pairs << io::csvField(f.name) << "," << name(c.frame) << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
             << rejectionName(c.rejection) << "," << c.estimated_distance << "," << (c.retrieved ? 1 : 0) << "\n";
     }
   }

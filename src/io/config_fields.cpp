@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "config_yaml_backend.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io::detail {
 namespace {
@@ -176,7 +177,7 @@ std::string readExtraClass(const YAML::Node& n, ExtraClass* out) {
       const std::string err = readIds(kv.second, &out->ids);
       if (!err.empty()) return err;
     } else {
-      return "unknown key '" + key + "' (expected name and ids)";
+      return "unknown key " + quoteContent(key) + " (expected name and ids)";
     }
   }
   return has_name ? "" : "missing name";

@@ -8,14 +8,15 @@
 #include <yaml-cpp/yaml.h>
 
 #include "config_fields.h"
+#include "config_yaml_guard.h"
 #include "file_util.h"
+#include "sgtllc/io/quote.h"
 
 namespace sgtllc::io {
 namespace {
 
 using detail::Field;
 using detail::fieldsFor;
-
 
 const Field* findField(const std::vector<Field>& fields, const std::string& key) {
   for (const Field& f : fields) {
@@ -56,7 +57,7 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& prefix, cons
     const std::string key = prefix.empty() ? name : prefix + "." + name;
     const auto [first, fresh] = seen.emplace(name, lineOf(kv.first));
     if (!fresh) {
-      throw Error(where(source, kv.first) + ": key '" + key + "' appears twice, at lines " +
+      throw Error(where(source, kv.first) + ": key " + quoteContent(key, 256) + " appears twice, at lines " +
                   std::to_string(first->second) + " and " + std::to_string(lineOf(kv.first)) + "; keep one");
     }
     rejectDuplicateKeys(kv.second, key, source);
@@ -75,15 +76,18 @@ void apply(Config& config, const std::vector<Field>& fields, const YAML::Node& m
       lines[key] = lineOf(kv.second);
       const std::string err = field->set(config, kv.second);
       if (!err.empty()) {
-        throw Error(where(source, kv.second) + ": " + key + ": " + err + ", got '" + YAML::Dump(kv.second) + "'");
+        const std::string got = kv.second.IsScalar() ? kv.second.Scalar() : YAML::Dump(kv.second);
+        throw Error(where(source, kv.second) + ": " + key + ": " + err + ", got " + quoteContent(got));
       }
     } else if (isSection(fields, key)) {
       if (!kv.second.IsMap()) throw Error(where(source, kv.second) + ": " + key + ": expected a map of keys");
       apply(config, fields, kv.second, key, source, lines);
     } else {
+      const std::string close = detail::closestKey(fields, prefix, name);
+      const std::string mean = close.empty() ? "" : "did you mean `" + close + "`? ";
       const char* hint = prefix == "cluster" ? "; a new class is declared in labels.extra_classes" : "";
-      throw Error(where(source, kv.first) + ": unknown key '" + key + "' (run `sgtllc config` for the valid keys" +
-                  hint + ")");
+      throw Error(where(source, kv.first) + ": unknown key " + quoteContent(key, 256) + " (" + mean +
+                  "run `sgtllc config` for the valid keys" + hint + ")");
     }
   }
 }
@@ -159,9 +163,10 @@ std::vector<std::pair<std::string, std::string>> configValues(const Config& conf
 Config parseConfig(const std::string& yaml, const std::string& source) {
   YAML::Node root;
   try {
+    detail::rejectAliases(yaml, source);  // before YAML::Load: walking an alias bomb's tree never ends
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
-    throw Error(source + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg);
+    throw Error(source + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + escapeControls(e.msg));
   }
   Config config;
   if (root.IsNull()) return config;

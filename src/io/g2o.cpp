@@ -10,6 +10,7 @@
 
 #include "sgtllc/io/output_file.h"
 #include "file_util.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -68,14 +69,14 @@ class LineParser {
   int id(size_t k) const {
     int v = 0;
     if (!detail::parseInteger(tokens_[k], v) || v < 0) {
-      throw Error(at_ + ": '" + std::string(tokens_[k]) + "' is not a vertex id (an integer ≥ 0)");
+      throw Error(at_ + ": " + quoteContent(tokens_[k]) + " is not a vertex id (an integer ≥ 0)");
     }
     return v;
   }
   double real(size_t k) const {
     double v = 0.0;
     if (!detail::parseReal(tokens_[k], v) || !std::isfinite(v)) {
-      throw Error(at_ + ": '" + std::string(tokens_[k]) + "' is not a finite number");
+      throw Error(at_ + ": " + quoteContent(tokens_[k]) + " is not a finite number");
     }
     return v;
   }
@@ -182,7 +183,7 @@ backend::PoseGraph readG2o(const std::string& path) {
     } else if (tokens[0] == kFixTag) {
       for (size_t k = 1; k < tokens.size(); ++k) p.id(k);  // our graphs fix vertex 0 themselves
     } else {
-      throw Error(p.at() + ": unknown tag '" + std::string(tokens[0]) + "' (expected " + kVertexTag + ", " +
+      throw Error(p.at() + ": unknown tag " + quoteContent(tokens[0]) + " (expected " + kVertexTag + ", " +
                   kEdgeTag + " or " + kFixTag + ")");
     }
   }

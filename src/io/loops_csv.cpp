@@ -11,6 +11,8 @@
 #include <Eigen/SVD>
 
 #include "file_util.h"
+#include "sgtllc/io/csv.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -29,29 +31,23 @@ void appendFixed6(std::string& out, double v) {
   out += buf;
 }
 
-std::vector<std::string_view> splitCommas(std::string_view line) {
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  std::vector<std::string_view> fields;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = line.find(',', start);
-    fields.push_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
-}
-
-std::string headerLine(bool with_information = false) {
-  std::string h;
-  for (const std::string& c : loopsCsvColumns()) h += (h.empty() ? "" : ",") + c;
+std::vector<std::string> headerColumns(bool with_information) {
+  std::vector<std::string> h = loopsCsvColumns();
   if (with_information) {
-    for (const std::string& c : loopsCsvInformationColumns()) h += "," + c;
+    const std::vector<std::string>& more = loopsCsvInformationColumns();
+    h.insert(h.end(), more.begin(), more.end());
   }
   return h;
 }
 
+std::string headerLine(bool with_information = false) {
+  std::string h;
+  for (const std::string& c : headerColumns(with_information)) h += (h.empty() ? "" : ",") + c;
+  return h;
+}
+
 /// The information fields of a row (21 strings): empty, or the symmetric matrix they list. Throws naming @p at.
-std::optional<backend::Matrix6d> parseInformation(const std::vector<std::string_view>& f, const std::string& at) {
+std::optional<backend::Matrix6d> parseInformation(const std::vector<std::string>& f, const std::string& at) {
   const std::vector<std::string>& names = loopsCsvInformationColumns();
   size_t empty = 0;
   for (size_t k = kColumns; k < f.size(); ++k) empty += f[k].empty();
@@ -62,8 +58,8 @@ std::optional<backend::Matrix6d> parseInformation(const std::vector<std::string_
     for (int c = r; c < 6; ++c, ++k) {
       double v = 0.0;
       if (!detail::parseReal(f[k], v) || !std::isfinite(v)) {
-        throw Error(at + ": column " + names[k - kColumns] + ": '" + std::string(f[k]) +
-                    "' is not a finite number (give all 21 information entries or none)");
+        throw Error(at + ": column " + names[k - kColumns] + ": " + quoteContent(f[k]) +
+                    " is not a finite number (give all 21 information entries or none)");
       }
       if (r == c && v < 0.0) throw Error(at + ": column " + names[k - kColumns] + ": negative information diagonal");
       information(r, c) = information(c, r) = v;
@@ -95,7 +91,10 @@ const std::vector<std::string>& loopsCsvInformationColumns() {
 std::string loopsCsvText(const std::vector<LoopRecord>& loops, bool with_information) {
   std::string out = headerLine(with_information) + "\n";
   for (const LoopRecord& l : loops) {
-    out += l.query + "," + l.match + ",";
+    appendCsvField(out, l.query);
+    out += ',';
+    appendCsvField(out, l.match);
+    out += ',';
     appendFixed6(out, l.score);
     out += ',';
     appendFixed6(out, l.score_c);
@@ -123,46 +122,42 @@ std::vector<LoopRecord> readLoopsCsv(const std::string& path, const std::vector<
   const std::vector<std::string>& columns = loopsCsvColumns();
 
   std::vector<LoopRecord> loops;
-  size_t pos = 0, line_no = 0;
-  bool header_seen = false, with_information = false;
-  while (pos < text.size()) {
-    ++line_no;
-    std::string_view line = detail::nextLine(text, pos);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    const std::string at = path + ":" + std::to_string(line_no);
-    if (!header_seen) {
-      with_information = line == headerLine(true);
-      if (line != headerLine() && !with_information) {
-        throw Error(at + ": header '" + std::string(line) + "' is not the loops CSV header '" + headerLine() +
-                    "' (optionally followed by the information columns i11,…,i66)");
-      }
-      header_seen = true;
-      continue;
-    }
-    if (line.empty()) continue;
-    const std::vector<std::string_view> f = splitCommas(line);
+  CsvReader reader(text, path);
+  std::vector<std::string> f;
+  if (!reader.next(f)) {
+    throw Error(path + ": empty file (expected the loops CSV header '" + headerLine() + "')");
+  }
+  const bool with_information = f == headerColumns(true);
+  if (f != headerColumns(false) && !with_information) {
+    std::string line;
+    for (const std::string& field : f) line += (line.empty() ? "" : ",") + csvField(field);
+    throw Error(reader.at() + ": header " + quoteContent(line) + " is not the loops CSV header '" + headerLine() +
+                "' (optionally followed by the information columns i11,…,i66)");
+  }
+  while (reader.next(f)) {
+    const std::string at = reader.at();
     const size_t expected = with_information ? kColumns + kInformationColumns : kColumns;
     if (f.size() != expected) {
       throw Error(at + ": " + std::to_string(f.size()) + " columns, expected " + std::to_string(expected) +
                   " (" + (with_information ? "the header's" : headerLine()) + ")");
     }
     LoopRecord l;
-    l.query = std::string(f[0]);
-    l.match = std::string(f[1]);
+    l.query = f[0];
+    l.match = f[1];
     for (const auto& [name, index, role] : {std::tuple{&l.query, &l.query_index, "query"},
                                             std::tuple{&l.match, &l.match_index, "match"}}) {
       const auto it = index_of.find(*name);
       if (it == index_of.end()) {
-        throw Error(at + ": unknown " + role + " frame '" + *name + "' (not one of the sequence's " +
+        throw Error(at + ": unknown " + role + " frame " + quoteContent(*name) + " (not one of the sequence's " +
                     std::to_string(frame_names.size()) + " frames)");
       }
       *index = it->second;
     }
-    if (l.query_index == l.match_index) throw Error(at + ": loop of frame '" + l.query + "' with itself");
+    if (l.query_index == l.match_index) throw Error(at + ": loop of frame " + quoteContent(l.query) + " with itself");
     double v[kColumns] = {};
     for (size_t k = 2; k < kColumns; ++k) {
       if (!detail::parseReal(f[k], v[k]) || !std::isfinite(v[k])) {
-        throw Error(at + ": column " + columns[k] + ": '" + std::string(f[k]) + "' is not a finite number");
+        throw Error(at + ": column " + columns[k] + ": " + quoteContent(f[k]) + " is not a finite number");
       }
     }
     l.score = v[2];
@@ -177,7 +172,6 @@ std::vector<LoopRecord> readLoopsCsv(const std::string& path, const std::vector<
     if (with_information) l.information = parseInformation(f, at);
     loops.push_back(l);
   }
-  if (!header_seen) throw Error(path + ": empty file (expected the loops CSV header '" + headerLine() + "')");
   return loops;
 }
 
@@ -186,7 +180,7 @@ std::vector<backend::Edge> loopEdges(const std::vector<LoopRecord>& loops, const
   edges.reserve(loops.size());
   for (const LoopRecord& l : loops) {
     if (l.query_index < 0 || l.match_index < 0) {
-      throw Error("loop " + l.query + " -> " + l.match + " has no frame indices (read it with readLoopsCsv)");
+      throw Error("loop " + quoteContent(l.query) + " -> " + quoteContent(l.match) + " has no frame indices (read it with readLoopsCsv)");
     }
     backend::Edge e;
     e.from = l.match_index;

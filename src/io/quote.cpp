@@ -34,9 +34,16 @@ size_t printableUtf8(std::string_view s, size_t i) {
   return cp < 0xA0 ? 0 : n;
 }
 
+/// Appends `\xHH` of @p c.
+void appendHex(std::string& out, unsigned char c) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  out += "\\x";
+  out += kHex[c >> 4];
+  out += kHex[c & 0xF];
+}
+
 /// Appends the escaped text of @p content (up to @p max_bytes of it) to @p out; returns the bytes consumed.
 size_t appendEscaped(std::string& out, std::string_view content, size_t max_bytes) {
-  static constexpr char kHex[] = "0123456789abcdef";
   size_t i = 0;
   while (i < content.size() && i < max_bytes) {
     const unsigned char c = static_cast<unsigned char>(content[i]);
@@ -57,9 +64,7 @@ size_t appendEscaped(std::string& out, std::string_view content, size_t max_byte
       case '\r': out += "\\r"; break;
       default:
         if (c < 0x20 || c >= 0x7F) {
-          out += "\\x";
-          out += kHex[c >> 4];
-          out += kHex[c & 0xF];
+          appendHex(out, c);
         } else {
           out += static_cast<char>(c);
         }
@@ -85,6 +90,29 @@ std::string quoteContent(std::string_view content, size_t max_bytes) {
   std::string out = "'";
   const size_t consumed = appendEscaped(out, content, max_bytes);
   return out + "'" + truncation(content, consumed);
+}
+
+std::string escapeControls(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  size_t i = 0;
+  while (i < text.size()) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x80) {
+      if (const size_t n = printableUtf8(text, i)) {
+        out.append(text.substr(i, n));
+        i += n;
+        continue;
+      }
+    }
+    if ((c < 0x20 && c != '\t' && c != '\n') || c >= 0x7F) {
+      appendHex(out, c);
+    } else {
+      out += static_cast<char>(c);
+    }
+    ++i;
+  }
+  return out;
 }
 
 }  // namespace sgtllc::io

@@ -10,6 +10,7 @@
 #include <system_error>
 #include <vector>
 
+#include "sgtllc/io/quote.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::sim {
@@ -46,11 +47,11 @@ class Entries {
       if (line.empty() || line[0] == '#') continue;
       const size_t space = line.find(' ');
       if (space == std::string::npos || space == 0 || space + 1 == line.size()) {
-        throw Error(where(n) + "expected 'key value', got '" + line + "'");
+        throw Error(where(n) + "expected 'key value', got " + io::quoteContent(line));
       }
       const std::string key = line.substr(0, space);
       if (!values_.emplace(key, std::make_pair(line.substr(space + 1), n)).second) {
-        throw Error(where(n) + "'" + key + "' appears twice");
+        throw Error(where(n) + io::quoteContent(key) + " appears twice");
       }
     }
   }
@@ -86,14 +87,14 @@ class Entries {
   }
 
   Error bad(const std::string& key, const std::string& value) const {
-    return Error(where(line_) + "'" + value + "' is not a valid " + key);
+    return Error(where(line_) + io::quoteContent(value) + " is not a valid " + key);
   }
 
   /// Throws for the first key nothing read.
   void checkAllUsed() const {
     for (const auto& [key, value] : values_) {
       if (std::find(used_.begin(), used_.end(), key) == used_.end()) {
-        throw Error(where(value.second) + "unknown key '" + key + "'");
+        throw Error(where(value.second) + "unknown key " + io::quoteContent(key));
       }
     }
   }

@@ -5,7 +5,8 @@
 /// `query,match,score,score_c,r11,r12,r13,tx,r21,r22,r23,ty,r31,r32,r33,tz`
 /// where query and match are frame names (file stems such as `004501`), score is the verification score s_t,
 /// score_c the consistency score, and the twelve numbers the row-major 3×4 T_match_query (maps points of the query
-/// scan into the match scan's LiDAR frame), written `%.6f`.
+/// scan into the match scan's LiDAR frame), written `%.6f`. A frame name holding a comma, a double quote, CR or LF
+/// is quoted as RFC 4180 says (csv.h); the reader accepts that quoting, newlines inside quotes included.
 ///
 /// Optionally (`sgtllc run` writes it) 21 more columns `i11,i12,…,i16,i22,…,i66`: the upper triangle, row by row, of
 /// the loop's 6×6 information matrix over (δt, δθ) (pose_graph_types.h), in shortest exact form, so `sgtllc

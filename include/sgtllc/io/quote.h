@@ -1,6 +1,6 @@
 /// @file quote.h
-/// @brief Safe echo of file content in messages: a crafted file must not reach the user's terminal as control
-///        sequences (issue 15, defect 6).
+/// @brief Safe echo of file content in messages: a crafted file (or a file name found in a folder) must not reach
+///        the user's terminal as control sequences.
 #pragma once
 
 #include <cstddef>
@@ -18,5 +18,14 @@ namespace sgtllc::io {
 std::string escapeContent(std::string_view content, size_t max_bytes = 64);
 /// (Not named `quoted`: argument-dependent lookup would pick std::quoted for a std::string.)
 std::string quoteContent(std::string_view content, size_t max_bytes = 64);
+
+/// Room for a whole name (a frame name, a file name found in a folder) where it is printed as output: PATH_MAX.
+inline constexpr size_t kNameBytes = 4096;
+
+/// @p text with only what a terminal would act on escaped: bytes below 0x20 other than tab and newline, DEL, C1
+/// controls and invalid UTF-8 become `\xHH`; everything else (backslashes and quotes included) is kept, so text
+/// that escapeContent() or quoteContent() already made safe comes back unchanged. The last guard of a whole
+/// message (the CLI's error line) that may hold a path built from a folder's file names.
+std::string escapeControls(std::string_view text);
 
 }  // namespace sgtllc::io
