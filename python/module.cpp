@@ -56,4 +56,5 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindRelocalization(m);
   sgtllc::python::bindBackend(m);
   sgtllc::python::bindAccumulate(m);
+  sgtllc::python::explainSetterTypeErrors(m);  // last: it rewraps the setters of every class bound above
 }
