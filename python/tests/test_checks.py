@@ -1,6 +1,8 @@
 """Python refuses what the command line refuses, with the same messages (non-rigid poses, a second Tr line, a
 quaternion that is not a unit one), and its own errors say what was expected (None for an array, a frame out of
 range, a wrong attribute type)."""
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -17,6 +19,19 @@ def test_read_poses_refuses_a_non_rigid_rotation(tmp_path):
         with pytest.raises(sgtllc.Error, match=r"scaled\.txt:2: rotation is not orthonormal \(\|RᵀR − I\| = 3, "
                                                r"at most 0\.001\)"):
             sgtllc.read_poses(str(path), pose_frame=frame)
+
+
+def test_python_and_the_command_line_say_the_same(tmp_path, cli):
+    bad = {"scaled.txt": IDENTITY + "2 0 0 0 0 2 0 0 0 0 2 0\n", "quat.txt": "0 0 0 0 2 0 0 0\n",
+           "cam0.txt": (KITTI / "odometry" / "kissicp_first1000_kitti.txt").read_text()}
+    for name, text in bad.items():
+        path = tmp_path / name
+        path.write_text(text)
+        with pytest.raises(sgtllc.Error) as python:
+            sgtllc.read_poses(str(path))
+        out = subprocess.run([cli, "optimize", "--odometry", str(path), "--loops", str(tmp_path / "none.csv")],
+                             capture_output=True, text=True)
+        assert out.returncode == 1 and str(python.value) in out.stderr, (name, out.stderr)
 
 
 def test_tum_quaternion_must_be_a_unit_one(tmp_path):
