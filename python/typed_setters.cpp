@@ -33,9 +33,8 @@ py::object explainingSetter(py::object fset, std::string attribute, std::string 
       fset(self, value);
     } catch (py::error_already_set& e) {
       // Only pybind11's argument mismatch: a setter's own TypeError (if any) already says what it means.
-      if (!e.matches(PyExc_TypeError) || std::string(e.what()).find("incompatible function arguments") == std::string::npos) {
-        throw;
-      }
+      const bool mismatch = std::string(e.what()).find("incompatible function arguments") != std::string::npos;
+      if (!e.matches(PyExc_TypeError) || !mismatch) throw;
       throw py::type_error(attribute + ": expected " + expected + ", got " +
                            py::str(py::type::of(value).attr("__name__")).cast<std::string>() + " " +
                            shortRepr(value));

@@ -1,4 +1,4 @@
-// `sgtllc run|eval SEQ --accumulate N` (issue 14) on a simulated, un-accumulated Mid-70 drive: it runs, and a
+// `sgtllc run|eval SEQ --accumulate N` on a simulated, un-accumulated Mid-70 drive: it runs, and a
 // missing or short odometry / poses.txt is an error naming the file (exit 1), a bad combination a usage error.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// `--accumulate N` of `run` and `eval` (issue 14): each frame merged with the N − 1 raw scans before it, moved by
+// `--accumulate N` of `run` and `eval`: each frame merged with the N − 1 raw scans before it, moved by
 // the --odometry poses or by the sequence's poses.txt, before node extraction (accumulate/scan_accumulator.h).
 #pragma once
 

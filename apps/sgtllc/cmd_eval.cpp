@@ -191,8 +191,8 @@ void runEval(const EvalCliOptions& o) {
   info.config_yaml = io::configToYaml(config);
   eval::ReportExtra extra;
   if (!o.odometry.empty()) {
-    back.odometry =
-        std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
+    back.odometry = std::make_unique<Odometry>(
+        readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
     options.on_frame = [&](size_t i, const FrameResult& r, const LoopDetector& detector) {
       if (const Candidate* c = r.loop()) {
         back.loops.push_back(detectedLoop(i, *c, detector.database(), source, config.backend.loops));

@@ -87,7 +87,8 @@ void runSequence(const RunOptions& o) {
   eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
-    odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
+    odometry = std::make_unique<Odometry>(
+        readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
   }
   applyAccumulation(source, o.accumulate, odometry.get(), o.sequence, o.calib, o.pose_frame);
   AccumulationCost accumulation;

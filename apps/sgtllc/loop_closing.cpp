@@ -46,7 +46,9 @@ Odometry readOdometry(const std::string& path, const std::string& calib, io::Pos
   Odometry o;
   o.path = path;
   io::FramedTrajectory read = io::readTrajectory(path, calib, frame);
-  if (!read.choice.note.empty()) std::cerr << (read.choice.warning ? "warning: " : "note: ") << read.choice.note << "\n";
+  if (!read.choice.note.empty()) {
+    std::cerr << (read.choice.warning ? "warning: " : "note: ") << read.choice.note << "\n";
+  }
   o.trajectory = std::move(read.trajectory);
   if (frames > 0) io::checkPoseCount(path, o.trajectory, frames);
   o.poses = o.trajectory.poses;

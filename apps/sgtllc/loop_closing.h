@@ -1,4 +1,4 @@
-// Closing the loop from the command line (issue 8): the odometry input, loop edges for the back end, batch and
+// Closing the loop from the command line (docs/backend.md): the odometry input, loop edges for the back end, batch and
 // online optimisation, and the corrected trajectory / g2o outputs shared by `run`, `optimize` and `eval`.
 #pragma once
 

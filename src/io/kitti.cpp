@@ -148,7 +148,9 @@ Eigen::Matrix4d readKittiCalibTr(const std::string& path) {
     Tr = parseRowMajor3x4(tokens, 1, path + ":" + std::to_string(line_no));
     tr_line = line_no;
   }
-  if (tr_line == 0) throw Error(path + ": no 'Tr:' line (the velodyne-to-cam0 transform of a KITTI odometry calib.txt)");
+  if (tr_line == 0) {
+    throw Error(path + ": no 'Tr:' line (the velodyne-to-cam0 transform of a KITTI odometry calib.txt)");
+  }
   return Tr;
 }
 

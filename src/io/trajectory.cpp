@@ -101,7 +101,9 @@ namespace {
 /// The file's KITTI poses, rotations checked, in the file's own frame.
 Trajectory readKitti(const std::string& path, const std::vector<Row>& rows) {
   const std::vector<Eigen::Matrix4d> file_poses = readKittiPoses(path);  // no comments or blanks: pose i = row i
-  for (size_t i = 0; i < file_poses.size(); ++i) checkRotation(file_poses[i].topLeftCorner<3, 3>(), where(path, rows[i].line));
+  for (size_t i = 0; i < file_poses.size(); ++i) {
+    checkRotation(file_poses[i].topLeftCorner<3, 3>(), where(path, rows[i].line));
+  }
   Trajectory t;
   t.format = TrajectoryFormat::kKitti;
   t.poses.reserve(file_poses.size());

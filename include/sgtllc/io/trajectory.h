@@ -34,7 +34,8 @@ enum class TrajectoryFormat {
 struct Trajectory {
   TrajectoryFormat format = TrajectoryFormat::kKitti;
   /// T_world_frame (p_world = T · p_frame). In the LiDAR frame if read through a calib (KITTI) or from TUM
-  /// (taken as given), else in the file's frame (KITTI without calib: cam0 of frame 0). KITTI rotations are kept
+  /// (taken as given), else in the file's own frame (KITTI without calib: cam0 or LiDAR, as the file was written;
+  /// the pose-frame overload of readTrajectory settles which). KITTI rotations are kept
   /// as written (orthonormal to the file's precision, checked to 1e-3), so a file written back is the same.
   std::vector<Eigen::Isometry3d> poses;
   /// TUM time stamps (s), one per pose; empty for KITTI.
