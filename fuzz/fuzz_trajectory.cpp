@@ -1,5 +1,6 @@
-// Trajectory files, KITTI-12 or TUM-8 (io::readTrajectory), without and with a KITTI calib, and a
-// write → re-read round trip of whatever was read (trajectory.h: "readTrajectory() gives back the same poses").
+// Trajectory files, KITTI-12 or TUM-8 (io::readTrajectory), without and with a KITTI calib, through the pose-frame
+// rule too, and a write → re-read round trip of whatever was read (trajectory.h: "readTrajectory() gives back the
+// same poses").
 // Input layout: an even byte 0 reads the rest as the trajectory alone; an odd byte 0 splits the rest into a
 // calib.txt part and the trajectory (byte 0 / 2 chooses where), so the calib conversion is fuzzed too.
 #include <cmath>
@@ -48,6 +49,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < t.poses.size(); ++i) {
     fuzz::require(t.poses[i].matrix().allFinite(), "finite poses");
     if (tum) fuzz::require(std::isfinite(t.stamps[i]) && (i == 0 || t.stamps[i - 1] <= t.stamps[i]), "stamps in order");
+  }
+
+  // The pose-frame rule on the same bytes (io/trajectory_frame.h): it reads or rejects (a frame it cannot tell is
+  // an error), and what it reads is what the plain reader gave, with or without the calib.
+  io::FramedTrajectory framed;
+  if (fuzz::readsOrRejects([&] { framed = io::readTrajectory(file.path(), calib_path, io::PoseFrame::kAuto); })) {
+    const io::Trajectory& f = framed.trajectory;
+    fuzz::require(f.poses.size() == t.poses.size() && f.format == t.format, "the rule keeps format and count");
+    fuzz::require(f.calib_Tr.has_value() == t.calib_Tr.has_value(), "auto with a calib applies it");
+    for (size_t i = 0; i < t.poses.size(); ++i) {
+      fuzz::require(f.poses[i].matrix() == t.poses[i].matrix(), "the rule reads the plain reader's poses");
+    }
   }
 
   // What was read writes and reads back: exactly for KITTI without calib (shortest exact decimals), to rounding

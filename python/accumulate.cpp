@@ -1,4 +1,4 @@
-// Scan accumulation (include/sgtllc/accumulate/scan_accumulator.h, issue 14): ScanAccumulator and merge_scans.
+// Scan accumulation (include/sgtllc/accumulate/scan_accumulator.h): ScanAccumulator and merge_scans.
 #include <pybind11/stl.h>
 
 #include "arrays.h"

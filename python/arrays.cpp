@@ -7,6 +7,8 @@
 
 #include <Python.h>
 
+#include "sgtllc/io/trajectory.h"
+
 namespace sgtllc::python {
 namespace {
 
@@ -15,8 +17,11 @@ py::array asArray(const py::handle& obj) {
   return py::module_::import("numpy").attr("asarray")(obj);
 }
 
+/// What was passed instead, for "expected ..., got ...": `shape (3, 2)`, or `None` (numpy.asarray(None) is a
+/// 0-d object array, whose shape () would say nothing).
 std::string shapeText(const py::array& a) {
-  std::string s = "(";
+  if (a.ndim() == 0 && a.dtype().kind() == 'O' && a.attr("item")().is_none()) return "None";
+  std::string s = "shape (";
   for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
@@ -43,7 +48,7 @@ std::vector<Eigen::Vector3f> pointsFromArray(const py::handle& obj, const char* 
   const py::array a = asArray(obj);
   const std::string expected = "an (N, 3) or (N, 4)";
   if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 4)) {
-    fail(std::string(name) + ": expected " + expected + " float array, got shape " + shapeText(a));
+    fail(std::string(name) + ": expected " + expected + " float array, got " + shapeText(a));
   }
   requireFloat(a, name, expected);
   const auto n = static_cast<size_t>(a.shape(0));
@@ -72,7 +77,7 @@ std::vector<uint32_t> labelsFromArray(const py::handle& obj, const char* name, s
   const py::array a = asArray(obj);
   const std::string expected = "an (N,) integer array of raw label ids, N = " + std::to_string(expected_size);
   if (a.ndim() != 1 || static_cast<size_t>(a.shape(0)) != expected_size) {
-    fail(std::string(name) + ": expected " + expected + ", got shape " + shapeText(a));
+    fail(std::string(name) + ": expected " + expected + ", got " + shapeText(a));
   }
   const char kind = kindOf(a);
   if (kind != 'i' && kind != 'u') fail(std::string(name) + ": expected " + expected + ", got dtype " + dtypeText(a));
@@ -114,12 +119,12 @@ std::vector<Node> nodesFromArrays(const py::handle& centres, const py::handle& c
                                   int num_classes) {
   const std::string cname = prefix + "centres", lname = prefix + "classes";
   const py::array c = asArray(centres);
-  if (c.ndim() != 2 || c.shape(1) != 3) fail(cname + ": expected an (N, 3) float array, got shape " + shapeText(c));
+  if (c.ndim() != 2 || c.shape(1) != 3) fail(cname + ": expected an (N, 3) float array, got " + shapeText(c));
   requireFloat(c, cname, "an (N, 3)");
   const auto n = static_cast<size_t>(c.shape(0));
   const py::array l = asArray(classes);
   const std::string expected = "an (N,) integer array of class indices, N = " + std::to_string(n);
-  if (l.ndim() != 1 || static_cast<size_t>(l.shape(0)) != n) fail(lname + ": expected " + expected + ", got shape " + shapeText(l));
+  if (l.ndim() != 1 || static_cast<size_t>(l.shape(0)) != n) fail(lname + ": expected " + expected + ", got " + shapeText(l));
   if (kindOf(l) != 'i' && kindOf(l) != 'u') fail(lname + ": expected " + expected + ", got dtype " + dtypeText(l));
   const auto cd = contiguous<double>(c);
   const auto ld = contiguous<int64_t>(l);
@@ -154,7 +159,7 @@ Eigen::MatrixXd matrixFromArray(const py::handle& obj, const char* name, int row
   const py::array a = asArray(obj);
   const std::string expected = "a (" + std::to_string(rows) + ", " + std::to_string(cols) + ") float array";
   if (a.ndim() != 2 || a.shape(0) != rows || a.shape(1) != cols) {
-    fail(std::string(name) + ": expected " + expected + ", got shape " + shapeText(a));
+    fail(std::string(name) + ": expected " + expected + ", got " + shapeText(a));
   }
   if (kindOf(a) != 'f' && kindOf(a) != 'i') fail(std::string(name) + ": expected " + expected + ", got dtype " + dtypeText(a));
   const auto d = contiguous<double>(a);
@@ -176,7 +181,7 @@ Eigen::Isometry3d isometryFromArray(const py::handle& obj, const char* name) {
 std::vector<Eigen::Matrix4d> posesFromArray(const py::handle& obj, const char* name) {
   const py::array a = asArray(obj);
   if (a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4) {
-    fail(std::string(name) + ": expected an (N, 4, 4) float array, got shape " + shapeText(a));
+    fail(std::string(name) + ": expected an (N, 4, 4) float array, got " + shapeText(a));
   }
   if (kindOf(a) != 'f') fail(std::string(name) + ": expected an (N, 4, 4) float array, got dtype " + dtypeText(a));
   const auto d = contiguous<double>(a);
@@ -184,6 +189,16 @@ std::vector<Eigen::Matrix4d> posesFromArray(const py::handle& obj, const char* n
   for (size_t i = 0; i < poses.size(); ++i) {
     poses[i] = Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(d.data() + 16 * i);
     if (!poses[i].allFinite()) fail(std::string(name) + "[" + std::to_string(i) + "] is not finite (NaN or Inf)");
+  }
+  return poses;
+}
+
+std::vector<Eigen::Matrix4d> rigidPosesFromArray(const py::handle& obj, const char* name) {
+  std::vector<Eigen::Matrix4d> poses = posesFromArray(obj, name);
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const std::string at = std::string(name) + "[" + std::to_string(i) + "]";
+    io::checkRotation(poses[i].topLeftCorner<3, 3>(), at);
+    if (poses[i].row(3) != Eigen::RowVector4d(0, 0, 0, 1)) throw Error(at + ": the last row must be 0 0 0 1");
   }
   return poses;
 }
@@ -196,7 +211,7 @@ std::vector<Eigen::Isometry3d> isometriesFromArray(const py::handle& obj, const 
 
 std::vector<double> doublesFromArray(const py::handle& obj, const char* name) {
   const py::array a = asArray(obj);
-  if (a.ndim() != 1) fail(std::string(name) + ": expected an (N,) array, got shape " + shapeText(a));
+  if (a.ndim() != 1) fail(std::string(name) + ": expected an (N,) array, got " + shapeText(a));
   const char kind = kindOf(a);
   if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b') {
     fail(std::string(name) + ": expected an (N,) numeric array, got dtype " + dtypeText(a));

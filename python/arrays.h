@@ -57,6 +57,9 @@ Eigen::Isometry3d isometryFromArray(const py::handle& array, const char* name);
 /// (N, 4, 4) finite float64 poses.
 std::vector<Eigen::Matrix4d> posesFromArray(const py::handle& array, const char* name);
 std::vector<Eigen::Isometry3d> isometriesFromArray(const py::handle& array, const char* name);
+/// posesFromArray, each pose rigid as a trajectory file's must be (io::checkRotation, last row 0 0 0 1): else
+/// sgtllc.Error `NAME[i]: rotation is not orthonormal (...)`, the command line's message.
+std::vector<Eigen::Matrix4d> rigidPosesFromArray(const py::handle& array, const char* name);
 /// (N,) float64 values.
 std::vector<double> doublesFromArray(const py::handle& array, const char* name);
 

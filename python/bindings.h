@@ -27,5 +27,6 @@ void bindMap(py::module_& m);            // map.cpp: Map, load_map, Relocalizer
 /// A copy of @p m (the C++ Map is move-only; Python objects share theirs).
 map::Map copyMap(const map::Map& m);
 void bindRelocalization(py::module_& m);  // relocalization.cpp: the relocalization protocol's metrics
+void explainSetterTypeErrors(py::module_& m);  // typed_setters.cpp: "Class.field: expected T, got U" TypeErrors
 
 }  // namespace sgtllc::python

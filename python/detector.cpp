@@ -74,9 +74,10 @@ void bindDetector(py::module_& m) {
                              "a copy of the detector's configuration")
       .def("nodes",
            [](PyLoopDetector& d, int frame) {
-             if (frame < 0 || frame >= d.detector.numFrames()) {
-               throw py::index_error("frame " + std::to_string(frame) + " is not in 0.." +
-                                     std::to_string(d.detector.numFrames() - 1));
+             const int n = d.detector.numFrames();
+             if (n == 0) throw py::index_error("frame " + std::to_string(frame) + ": the detector holds no frames");
+             if (frame < 0 || frame >= n) {
+               throw py::index_error("frame " + std::to_string(frame) + " is not in 0.." + std::to_string(n - 1));
              }
              return nodesToArrays(d.detector.database().nodes(frame));
            },
@@ -90,14 +91,15 @@ void bindDetector(py::module_& m) {
                for (int f = 0; f < d.detector.numFrames(); ++f) frame_names.push_back(std::to_string(f));
              }
              std::vector<Eigen::Matrix4d> frame_poses;
-             if (!poses.is_none()) frame_poses = posesFromArray(poses, "poses");
+             if (!poses.is_none()) frame_poses = rigidPosesFromArray(poses, "poses");
              std::lock_guard<std::mutex> lock(d.mutex);
              return std::make_shared<map::Map>(map::makeMap(d.detector.database(), d.detector.config(),
                                                             std::move(frame_names), std::move(frame_poses)));
            },
            py::arg("names") = py::none(), py::arg("poses") = py::none(),
            "The stored frames as a Map (copied): names (one per frame; default '0', '1', ...) and optional\n"
-           "(N, 4, 4) poses T_world_lidar. Raises sgtllc.Error for a wrong count or a repeated name.");
+           "(N, 4, 4) poses T_world_lidar (rigid: rotations orthonormal within 1e-3, last row 0 0 0 1, as the command\n"
+           "line's trajectory files). Raises sgtllc.Error for a wrong count, a repeated name or a non-rigid pose.");
 
   m.def("compare_pair",
         [](const ArrayLike& qp, const ArrayLike& ql, const ArrayLike& mp, const ArrayLike& ml,

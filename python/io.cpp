@@ -1,5 +1,7 @@
 // File readers (include/sgtllc/io/): KITTI scans, labels, poses and calib, PCD, node files, sequence folders.
 // A missing file raises FileNotFoundError; a malformed one sgtllc.Error naming the file (and line) and the problem.
+#include <optional>
+
 #include <pybind11/stl.h>
 
 #include "arrays.h"
@@ -9,6 +11,7 @@
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
 #include "sgtllc/io/sequence.h"
+#include "sgtllc/io/trajectory.h"
 
 namespace sgtllc::python {
 namespace {
@@ -44,6 +47,33 @@ py::tuple readCloud(const Read& read) {
     cloud = read();
   }
   return py::make_tuple(pointsToArray(std::move(cloud.points)), labelsArray(std::move(cloud.labels)));
+}
+
+/// read_poses: io::readTrajectory with the pose-frame rule, its note as a UserWarning.
+py::array_t<double> readPoses(const std::string& path, const std::optional<std::string>& calib,
+                              const std::string& pose_frame) {
+  requireFile(path);
+  if (calib) requireFile(*calib);
+  const io::PoseFrame frame = io::parsePoseFrame(pose_frame);
+  io::FramedTrajectory read;
+  {
+    py::gil_scoped_release release;
+    read = io::readTrajectory(path, calib.value_or(""), frame);
+  }
+  if (!read.choice.note.empty() && PyErr_WarnEx(PyExc_UserWarning, read.choice.note.c_str(), 1) != 0) {
+    throw py::error_already_set();  // warnings turned into errors
+  }
+  return posesToArray(read.trajectory.poses);
+}
+
+/// Raises IndexError unless frame @p i is one of @p s's.
+size_t frameIndex(const io::SequenceDir& s, py::ssize_t i) {
+  const auto n = static_cast<py::ssize_t>(s.size());
+  if (i < 0 || i >= n) {
+    throw py::index_error("frame " + std::to_string(i) + " is out of range: the sequence has " + std::to_string(n) +
+                          " frames" + (n > 0 ? " (0.." + std::to_string(n - 1) + ")" : std::string()));
+  }
+  return static_cast<size_t>(i);
 }
 
 }  // namespace
@@ -96,12 +126,13 @@ void bindIo(py::module_& m) {
         py::arg("path"),
         "Reads x, y, z of a PCD file, with or without a label field (a raw scan for label_scan).\n"
         "Returns points (N, 3) float32.");
-  m.def("read_poses",
-        [](const std::string& path) {
-          requireFile(path);
-          return posesToArray(io::readKittiPoses(path));
-        },
-        py::arg("path"), "Reads KITTI odometry poses (cam0 of frame i in cam0 of frame 0) as an (N, 4, 4) array.");
+  m.def("read_poses", &readPoses, py::arg("path"), py::arg("calib") = py::none(), py::arg("pose_frame") = "auto",
+        "Reads a trajectory, KITTI (12 columns) or TUM (8 columns), as (N, 4, 4) LiDAR-frame poses T_world_frame.\n"
+        "The command line's rule and messages (--calib is calib=, --pose-frame is pose_frame=): a KITTI file goes\n"
+        "through calib's Tr (cam0 poses, KITTI's poses.txt); pose_frame='lidar' takes it as LiDAR poses;\n"
+        "'auto' without a calib lets the motion decide: LiDAR motion is read as such with a UserWarning saying so,\n"
+        "cam0 motion or too little motion raises sgtllc.Error naming calib. TUM files are LiDAR poses.\n"
+        "Rotations must be orthonormal (1e-3), TUM quaternions unit (1e-3), as for `sgtllc run --odometry`.");
   m.def("read_calib",
         [](const std::string& path) {
           requireFile(path);
@@ -139,11 +170,17 @@ void bindIo(py::module_& m) {
            "Lists the scans in file-name order; raises sgtllc.Error if velodyne/ is missing or a label is.")
       .def("__len__", &io::SequenceDir::size, "number of scans")
       .def_property_readonly("dir", &io::SequenceDir::dir, "the folder as given")
-      .def("bin_path", &io::SequenceDir::binPath, py::arg("i"), "DIR/velodyne/NAME.bin of frame i")
-      .def("label_path", &io::SequenceDir::labelPath, py::arg("i"), "DIR/labels/NAME.label of frame i")
-      .def("frame_name", &io::SequenceDir::frameName, py::arg("i"), "file stem of frame i ('000052')")
+      .def("bin_path", [](const io::SequenceDir& s, py::ssize_t i) { return s.binPath(frameIndex(s, i)); },
+           py::arg("i"), "DIR/velodyne/NAME.bin of frame i")
+      .def("label_path", [](const io::SequenceDir& s, py::ssize_t i) { return s.labelPath(frameIndex(s, i)); },
+           py::arg("i"), "DIR/labels/NAME.label of frame i")
+      .def("frame_name", [](const io::SequenceDir& s, py::ssize_t i) { return s.frameName(frameIndex(s, i)); },
+           py::arg("i"), "file stem of frame i ('000052')")
       .def("load",
-           [](const io::SequenceDir& s, size_t i) { return readCloud([&] { return s.load(i); }); },
+           [](const io::SequenceDir& s, py::ssize_t i) {
+             const size_t k = frameIndex(s, i);
+             return readCloud([&] { return s.load(k); });
+           },
            py::arg("i"), "Reads frame i: (points (N, 3) float32, labels (N,) uint32).");
 }
 

@@ -1,5 +1,5 @@
-// Map files and relocalization (include/sgtllc/map/): Map, load_map / Map.save, Relocalizer (issue 10). The
-// detector's to_map and resume live in detector.cpp with the detector.
+// Map files and relocalization (include/sgtllc/map/, docs/relocalization.md): Map, load_map / Map.save, Relocalizer.
+// The detector's to_map and resume live in detector.cpp with the detector.
 #include <memory>
 #include <mutex>
 

@@ -1,4 +1,4 @@
-// The `sgtllc` Python module (issue 11): a thin mirror of the C++ library, numpy in and out.
+// The `sgtllc` Python module (README "Python"): a thin mirror of the C++ library, numpy in and out.
 //
 // Exceptions: sgtllc::Error (bad input data or configuration) becomes sgtllc.Error, a ValueError; its subclass
 // sgtllc::ConfigError becomes sgtllc.ConfigError, whose `key` attribute is the YAML key of the offending field
@@ -57,4 +57,5 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindRelocalization(m);
   sgtllc::python::bindBackend(m);
   sgtllc::python::bindAccumulate(m);
+  sgtllc::python::explainSetterTypeErrors(m);  // last: it rewraps the setters of every class bound above
 }

@@ -1,4 +1,4 @@
-// `sgtllc run|eval SEQ --accumulate N` (issue 14) on a simulated, un-accumulated Mid-70 drive: it runs, and a
+// `sgtllc run|eval SEQ --accumulate N` on a simulated, un-accumulated Mid-70 drive: it runs, and a
 // missing or short odometry / poses.txt is an error naming the file (exit 1), a bad combination a usage error.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -79,12 +79,14 @@ TEST_F(CliAccumulate, PosesTxtMustBeThereWholeAndWithItsCalib) {
   r = run("run " + path("seq") + " --accumulate 10");
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_THAT(r.out, HasSubstr("poses.txt: 11 poses but the sequence has 12 frames"));
-  // Whole, but without calib.txt its cam0 poses cannot be brought into the LiDAR frame; --calib can.
+  // Whole, but without calib.txt its cam0 poses cannot be brought into the LiDAR frame: the frame rule refuses
+  // them, naming --calib (io/trajectory_frame.h); --calib can.
   fs::copy_file(path("poses.txt"), path("seq/poses.txt"), fs::copy_options::overwrite_existing);
   fs::rename(path("seq/calib.txt"), path("calib.txt"));
   r = run("run " + path("seq") + " --accumulate 10");
   EXPECT_EQ(r.status, 1) << r.out;
-  EXPECT_THAT(r.out, HasSubstr("poses.txt: KITTI poses are in cam0"));
+  EXPECT_THAT(r.out, HasSubstr("poses.txt: these KITTI poses move along their z axis, as KITTI's cam0 poses do"));
+  EXPECT_THAT(r.out, HasSubstr("give --calib CALIB.txt"));
   r = run("run " + path("seq") + " --accumulate 10 --calib " + path("calib.txt"));
   EXPECT_EQ(r.status, 0) << r.out;
 }

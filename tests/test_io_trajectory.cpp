@@ -93,7 +93,9 @@ TEST_F(TrajectoryIo, CalibConvertsCam0ToLidarAndTheWriterBack) {
 }
 
 TEST_F(TrajectoryIo, TumQuaternionIsNormalisedAndCommentsSkipped) {
-  const std::string file = write("t.txt", "# timestamp tx ty tz qx qy qz qw\n5 1 2 3 0 0 2 2\n6 1 2 3 0 0 0 -3\n");
+  // Written to 7 digits, off unit length by up to 1e-3 (the tolerance): normalised.
+  const std::string file =
+      write("t.txt", "# timestamp tx ty tz qx qy qz qw\n5 1 2 3 0 0 0.7071068 0.7071068\n6 1 2 3 0 0 0 -1.0009\n");
   const Trajectory t = sgtllc::io::readTrajectory(file);
   ASSERT_EQ(t.poses.size(), 2u);
   EXPECT_EQ(t.stamps, (std::vector<double>{5, 6}));
@@ -151,7 +153,11 @@ TEST_F(TrajectoryIo, NonFiniteNumbersNameLineAndToken) {
 
 TEST_F(TrajectoryIo, BadRotationsAreRejected) {
   EXPECT_THAT(readError(kIdentityTum + "1 0 0 0 0 0 0 0\n"),
-              AllOf(HasSubstr("traj.txt:2: quaternion"), HasSubstr("has norm 0")));
+              AllOf(HasSubstr("traj.txt:2: quaternion"), HasSubstr("has norm 0, not 1")));
+  // Not a unit quaternion: refused rather than normalised (a scale or a wrong column would hide behind it).
+  EXPECT_THAT(readError(kIdentityTum + "1 0 0 0 2 0 0 0\n"),
+              HasSubstr("traj.txt:2: quaternion (2, 0, 0, 0) has norm 2, not 1"));
+  EXPECT_THAT(readError(kIdentityTum + "1 0 0 0 0 0 0 1.0011\n"), HasSubstr("has norm 1.0011, not 1"));
   EXPECT_THAT(readError(kIdentityKitti + "2 0 0 0 0 1 0 0 0 0 1 0\n"),
               AllOf(HasSubstr("traj.txt:2: rotation is not orthonormal"), HasSubstr("= 3")));
   EXPECT_THAT(readError("-1 0 0 0 0 1 0 0 0 0 1 0\n"), HasSubstr("traj.txt:1: rotation has determinant -1"));
@@ -161,7 +167,10 @@ TEST_F(TrajectoryIo, LayoutErrors) {
   EXPECT_THAT(readError(""), HasSubstr("traj.txt: no poses"));
   EXPECT_THAT(readError(kIdentityKitti + "\n" + kIdentityKitti), HasSubstr("traj.txt:3: pose after blank line 2"));
   EXPECT_THAT(readError("# a comment\n" + kIdentityKitti), HasSubstr("comment lines in a KITTI pose file"));
-  EXPECT_THAT(readError("2 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n"), HasSubstr("traj.txt:2: time stamp 1 is before"));
+  EXPECT_THAT(readError("2 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n"), HasSubstr("traj.txt:2: time stamp '1' is before"));
+  // A token echoed in a message never reaches the terminal raw (io/quote.h).
+  EXPECT_THAT(readError("0 0 0 0 0 0 0 1\n\x1b[2J 0 0 0 0 0 0 1\n"),
+              HasSubstr("traj.txt:2: '\\x1b[2J' is not a finite number"));
   // Trailing blank lines are fine.
   EXPECT_EQ(sgtllc::io::readTrajectory(write("ok.txt", kIdentityKitti + "\n\n")).poses.size(), 1u);
 }
@@ -170,6 +179,15 @@ TEST_F(TrajectoryIo, CalibWithoutTrIsAnError) {
   const std::string bad_calib = write("calib_no_tr.txt", "P0: 1 0 0 0 0 1 0 0 0 0 1 0\n");
   EXPECT_THAT(readError(kIdentityKitti, bad_calib), HasSubstr("calib_no_tr.txt: no 'Tr:' line"));
   EXPECT_THAT(readError(kIdentityKitti, path("missing_calib.txt")), HasSubstr("cannot open"));
+}
+
+// Two Tr lines (a merged or concatenated calib) leave the transform ambiguous: refused, naming both lines.
+TEST_F(TrajectoryIo, CalibWithTwoTrLinesIsAnError) {
+  const std::string tr = "Tr: 1 0 0 0 0 1 0 0 0 0 1 0\n";
+  const std::string two = write("calib_two.txt", "P0: 1 0 0 0 0 1 0 0 0 0 1 0\n" + tr + "\n" + tr);
+  EXPECT_THAT(readError(kIdentityKitti, two), HasSubstr("calib_two.txt:4: a second Tr: line (line 2 has one)"));
+  EXPECT_THAT(sgtllc::test::errorOf([&] { sgtllc::io::readKittiCalibTr(two); }),
+              HasSubstr("calib_two.txt:4: a second Tr: line (line 2 has one)"));
 }
 
 // fuzz/regressions/trajectory/calib_overflow: an invertible Tr whose scales overflow Tr⁻¹ · P · Tr for a rotation

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <iostream>
 
 #include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/eval/sequence_eval.h"
@@ -21,13 +20,9 @@ void addAccumulateOption(CLI::App& cmd, int& scans) {
 }
 
 void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
-                       const std::string& calib) {
+                       const std::string& calib, io::PoseFrame frame) {
   if (scans <= 1) return;
   if (odometry) {
-    if (odometry->cam0) {
-      std::cerr << "note: " << odometry->path << " is a KITTI trajectory read without a calib: --accumulate takes "
-                << "its poses as LiDAR poses (give --calib if they are in cam0, like KITTI's poses.txt)\n";
-    }
     source.accumulate(scans, odometry->poses);
     return;
   }
@@ -35,12 +30,7 @@ void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odo
   if (!fs::exists(poses)) {
     throw Error(poses + ": missing; --accumulate needs one pose per frame: give --odometry ODOM.txt or add poses.txt");
   }
-  const Odometry truth = readOdometry(poses, sequenceCalib(calib, sequence), source.size());
-  if (truth.cam0) {
-    throw Error(poses + ": KITTI poses are in cam0 and there is no " + (fs::path(sequence) / "calib.txt").string() +
-                " (Tr) to bring them into the LiDAR frame; give --calib CALIB.txt");
-  }
-  source.accumulate(scans, truth.poses);
+  source.accumulate(scans, readOdometry(poses, sequenceCalib(calib, sequence), frame, source.size()).poses);
 }
 
 void AccumulationCost::add(const eval::LoadedFrame& frame) {

@@ -1,4 +1,4 @@
-// `--accumulate N` of `run` and `eval` (issue 14): each frame merged with the N − 1 raw scans before it, moved by
+// `--accumulate N` of `run` and `eval`: each frame merged with the N − 1 raw scans before it, moved by
 // the --odometry poses or by the sequence's poses.txt, before node extraction (accumulate/scan_accumulator.h).
 #pragma once
 
@@ -17,11 +17,11 @@ namespace sgtllc::cli {
 void addAccumulateOption(CLI::App& cmd, int& scans);
 
 /// With @p scans > 1, makes @p source accumulate: by @p odometry's poses if given (the --odometry file, read once
-/// for the back end too), else by SEQ_DIR/poses.txt read through @p calib (default SEQ_DIR/calib.txt). Throws
-/// sgtllc::Error naming the file if it is missing, malformed or has not one pose per frame, or if poses.txt is a
-/// KITTI file with no calib to bring its cam0 poses into the LiDAR frame.
+/// for the back end too), else by SEQ_DIR/poses.txt read by the pose-frame rule with @p calib (default
+/// SEQ_DIR/calib.txt) and @p frame. Throws sgtllc::Error naming the file if it is missing, malformed or has not one
+/// pose per frame, or if its frame is cam0 or undecided without a calib (readOdometry).
 void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
-                       const std::string& calib);
+                       const std::string& calib, io::PoseFrame frame);
 
 /// What accumulation cost over a run: merge time per frame and the largest buffer.
 struct AccumulationCost {

@@ -25,6 +25,7 @@ struct EvalCliOptions {
   std::string sequence, pairs, nodes, report, config;
   std::string labeller, labels_dir;  ///< --labeller, --labels-dir (as `sgtllc run`)
   std::string odometry, calib;  ///< --odometry: also close the loop and report trajectory errors
+  io::PoseFrame pose_frame = io::PoseFrame::kAuto;  ///< --pose-frame of a KITTI --odometry (or poses.txt)
   std::string map;              ///< --map: the relocalization protocol in this map instead
   ClosingOutputs outputs;
   int threads = 0;
@@ -107,10 +108,6 @@ struct EvalClosing {
   void finish(const eval::SequenceRun& run, const eval::GroundTruth& truth_poses, const Config& config) {
     closing = closeLoopsBatch(*odometry, loops, config.backend);
     for (const eval::FrameRecord& f : run.frames) truth.emplace_back(truth_poses.pose(f.frame));
-    if (odometry->cam0) {
-      std::cerr << "warning: " << odometry->path << " is read in KITTI cam0 axes (no calib) but the ground truth is in "
-                << "the LiDAR frame; give --calib\n";
-    }
     comparison = compareTrajectories(truth, *odometry, closing);
     summary = closingSummary(loops, closing);
   }
@@ -194,15 +191,15 @@ void runEval(const EvalCliOptions& o) {
   info.config_yaml = io::configToYaml(config);
   eval::ReportExtra extra;
   if (!o.odometry.empty()) {
-    back.odometry =
-        std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
+    back.odometry = std::make_unique<Odometry>(
+        readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
     options.on_frame = [&](size_t i, const FrameResult& r, const LoopDetector& detector) {
       if (const Candidate* c = r.loop()) {
         back.loops.push_back(detectedLoop(i, *c, detector.database(), source, config.backend.loops));
       }
     };
   }
-  applyAccumulation(source, o.accumulate, back.odometry.get(), o.sequence, o.calib);
+  applyAccumulation(source, o.accumulate, back.odometry.get(), o.sequence, o.calib, o.pose_frame);
 
   UnknownLabels unknown;  // one warning per run, not one per frame
   options.on_frame = [&unknown, &source, chained = options.on_frame](size_t i, const FrameResult& r,
@@ -302,6 +299,7 @@ void addEvalCommand(CLI::App& app) {
                   "also close the loop: optimise this odometry (KITTI or TUM) with the detected loops and report "
                   "ATE/RPE of odometry and corrected trajectory against poses.txt");
   cmd->add_option("--calib", o->calib, "calib.txt for a KITTI --odometry (default: SEQ_DIR/calib.txt)");
+  addPoseFrameOption(*cmd, o->pose_frame, "--odometry (without it: of SEQ_DIR/poses.txt for --accumulate)");
   addAccumulateOption(*cmd, o->accumulate);
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_option("--map", o->map,
@@ -316,6 +314,7 @@ void addEvalCommand(CLI::App& app) {
       throw CLI::ValidationError("eval", "--calib (without --accumulate), --out-trajectory, --out-graph and "
                                          "--out-loops need --odometry");
     }
+    checkPoseFrameOptions("eval", o->calib, o->pose_frame);
     if (!o->odometry.empty() && !o->pairs.empty()) {
       throw CLI::ValidationError("eval", "--odometry needs the sequence protocol; drop --pairs");
     }

@@ -18,6 +18,7 @@ namespace {
 
 struct OptimizeOptions {
   std::string odometry, loops, calib, frames, ground_truth, report, config;
+  io::PoseFrame pose_frame = io::PoseFrame::kAuto;  ///< --pose-frame of a KITTI --odometry
   ClosingOutputs outputs;
   double false_fraction = 0.0;
   uint64_t seed = 7;
@@ -73,17 +74,15 @@ void runOptimize(const OptimizeOptions& o) {
   checkClosingOutputs(o.outputs, o.force);
   if (!o.report.empty()) checkReportFiles(o.report, kReportFiles, o.force);
 
-  const Odometry odometry = readOdometry(o.odometry, o.calib, 0);
+  const Odometry odometry = readOdometry(o.odometry, o.calib, o.pose_frame, 0);
   const std::vector<std::string> names = frameNames(o.frames, odometry.poses.size(), config);
   io::checkPoseCount(o.odometry, odometry.trajectory, names.size());
   std::vector<Eigen::Isometry3d> truth;
   if (!o.ground_truth.empty()) {
-    const Odometry gt = readOdometry(o.ground_truth, o.calib, names.size());
-    if (gt.cam0 != odometry.cam0) {
-      std::cerr << "warning: " << o.ground_truth << " and " << o.odometry
-                << " are in different frames (one KITTI cam0 without calib, the other LiDAR); give --calib\n";
-    }
-    truth = gt.poses;
+    // With --calib the ground truth is read by the auto rule (KITTI's poses are cam0), so LiDAR-frame odometry
+    // (--pose-frame lidar) can be compared with it; without one it is in the frame --pose-frame gives.
+    const io::PoseFrame frame = o.calib.empty() ? o.pose_frame : io::PoseFrame::kAuto;
+    truth = readOdometry(o.ground_truth, o.calib, frame, names.size()).poses;
   }
   std::vector<ClosingLoop> loops = csvLoops(io::readLoopsCsv(o.loops, names), config.backend.loops);
   const size_t real = loops.size();
@@ -126,6 +125,7 @@ void addOptimizeCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--loops", o->loops, "loops CSV written by `sgtllc run --out`")->required();
   cmd->add_option("--calib", o->calib, "KITTI calib.txt: its Tr converts KITTI poses (odometry, ground truth) to LiDAR");
+  addPoseFrameOption(*cmd, o->pose_frame, "--odometry (and of --ground-truth when there is no --calib)");
   cmd->add_option("--frames", o->frames,
                   "sequence folder (velodyne/) or node folder whose file names the CSV uses (default: frame i is "
                   "named by its 6-digit number, 000000, 000001, ...)");
@@ -143,7 +143,10 @@ void addOptimizeCommand(CLI::App& app) {
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary (and trajectory errors) as one JSON object");
   cmd->add_flag("--force", o->force, "overwrite existing output files");
-  cmd->callback([o] { runOptimize(*o); });
+  cmd->callback([o] {
+    checkPoseFrameOptions("optimize", o->calib, o->pose_frame, !o->ground_truth.empty());
+    runOptimize(*o);
+  });
 }
 
 }  // namespace sgtllc::cli

@@ -26,6 +26,7 @@ struct RunOptions {
   std::string labeller;    ///< --labeller file|geometric
   std::string labels_dir;  ///< --labels-dir: NAME.label files instead of SEQ_DIR/labels
   std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
+  io::PoseFrame pose_frame = io::PoseFrame::kAuto;  ///< --pose-frame of a KITTI --odometry (or poses.txt)
   std::string save_map;         ///< --save-map: the database, names and poses as a map file
   ClosingOutputs outputs;
   int threads = 0;
@@ -87,9 +88,10 @@ void runSequence(const RunOptions& o) {
   eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
-    odometry = std::make_unique<Odometry>(readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), source.size()));
+    odometry = std::make_unique<Odometry>(
+        readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
   }
-  applyAccumulation(source, o.accumulate, odometry.get(), o.sequence, o.calib);
+  applyAccumulation(source, o.accumulate, odometry.get(), o.sequence, o.calib, o.pose_frame);
   AccumulationCost accumulation;
   std::string poses_from;
   std::vector<Eigen::Matrix4d> map_poses;
@@ -148,7 +150,7 @@ void runSequence(const RunOptions& o) {
     closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
     writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend, o.force);
     for (const Eigen::Isometry3d& T : closing->poses) map_poses.push_back(T.matrix());
-    poses_from = "the corrected trajectory of " + odometry->path + (odometry->cam0 ? " (KITTI cam0 axes: no calib)" : "");
+    poses_from = "the corrected trajectory of " + odometry->path;
   }
   if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);
   if (!o.save_map.empty()) {
@@ -211,6 +213,7 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--calib", o->calib,
                   "KITTI calib.txt for a KITTI --odometry (or poses.txt, with --accumulate) in cam0 (default: "
                   "SEQ_DIR/calib.txt if it exists)");
+  addPoseFrameOption(*cmd, o->pose_frame, "--odometry (without it: of SEQ_DIR/poses.txt for --accumulate)");
   addAccumulateOption(*cmd, o->accumulate);
   cmd->add_option("--save-map", o->save_map,
                   "save the database as a map file for `sgtllc localize` (frames named as the input; poses: the "
@@ -236,6 +239,7 @@ void addRunCommand(CLI::App& app) {
       throw CLI::ValidationError("run", "--out-trajectory, --out-graph, --out-loops, --calib (without --accumulate) "
                                         "and --online need --odometry");
     }
+    checkPoseFrameOptions("run", o->calib, o->pose_frame);
     if (o->accumulate > 1 && !o->nodes.empty()) {
       throw CLI::ValidationError("run", "--accumulate merges scans: give SEQ_DIR, not --nodes");
     }

@@ -1,6 +1,7 @@
 #include "loop_closing.h"
 
 #include <filesystem>
+#include <iostream>
 
 #include "sgtllc/backend/information.h"
 #include "sgtllc/io/g2o.h"
@@ -24,12 +25,32 @@ std::vector<backend::Edge> acceptedLoopEdges(const std::vector<ClosingLoop>& loo
 
 }  // namespace
 
-Odometry readOdometry(const std::string& path, const std::string& calib, size_t frames) {
+void addPoseFrameOption(CLI::App& cmd, io::PoseFrame& frame, const std::string& what) {
+  cmd.add_option_function<std::string>(
+         "--pose-frame", [&frame](const std::string& name) { frame = io::parsePoseFrame(name); },
+         "frame of " + what + " if it is KITTI-format (12 columns): lidar (x forward, z up: KISS-ICP on most data), "
+         "cam0 (KITTI's poses.txt: z forward, y down; needs --calib), or auto (default: --calib means cam0, else "
+         "the motion decides and the choice is printed). TUM files are LiDAR poses")
+      ->check(CLI::IsMember({"auto", "lidar", "cam0"}));
+}
+
+void checkPoseFrameOptions(const std::string& command, const std::string& calib, io::PoseFrame frame,
+                           bool calib_has_other_use) {
+  if (!calib.empty() && frame == io::PoseFrame::kLidar && !calib_has_other_use) {
+    throw CLI::ValidationError(command, "--calib converts cam0 poses, --pose-frame lidar says they are LiDAR poses: "
+                                        "give one of them");
+  }
+}
+
+Odometry readOdometry(const std::string& path, const std::string& calib, io::PoseFrame frame, size_t frames) {
   Odometry o;
   o.path = path;
-  o.trajectory = io::readTrajectory(path, calib);
+  io::FramedTrajectory read = io::readTrajectory(path, calib, frame);
+  if (!read.choice.note.empty()) {
+    std::cerr << (read.choice.warning ? "warning: " : "note: ") << read.choice.note << "\n";
+  }
+  o.trajectory = std::move(read.trajectory);
   if (frames > 0) io::checkPoseCount(path, o.trajectory, frames);
-  o.cam0 = o.trajectory.format == io::TrajectoryFormat::kKitti && !o.trajectory.calib_Tr;
   o.poses = o.trajectory.poses;
   for (Eigen::Isometry3d& T : o.poses) {
     T.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();

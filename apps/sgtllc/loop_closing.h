@@ -1,4 +1,4 @@
-// Closing the loop from the command line (issue 8): the odometry input, loop edges for the back end, batch and
+// Closing the loop from the command line (docs/backend.md): the odometry input, loop edges for the back end, batch and
 // online optimisation, and the corrected trajectory / g2o outputs shared by `run`, `optimize` and `eval`.
 #pragma once
 
@@ -18,17 +18,26 @@
 namespace sgtllc::cli {
 
 /// The --odometry file: as read (so the corrected trajectory is written back in its format and frame) and its
-/// poses with rotations projected onto SO(3) (the KITTI Tr conversion leaves them orthonormal to ~1e-7 only).
+/// poses in the LiDAR frame with rotations projected onto SO(3) (the KITTI Tr conversion leaves them orthonormal
+/// to ~1e-7 only).
 struct Odometry {
   std::string path;
   io::Trajectory trajectory;
   std::vector<Eigen::Isometry3d> poses;
-  bool cam0 = false;  ///< KITTI read without a calib: poses in cam0 axes (y down), not the LiDAR frame
 };
 
-/// Reads a KITTI (through @p calib if given) or TUM trajectory; with @p frames > 0 it must have one pose per frame.
-/// Throws sgtllc::Error naming the file, the line and the problem.
-Odometry readOdometry(const std::string& path, const std::string& calib, size_t frames);
+/// Adds `--pose-frame auto|lidar|cam0` (the frame of a KITTI-format --odometry, described by @p what) to @p cmd.
+void addPoseFrameOption(CLI::App& cmd, io::PoseFrame& frame, const std::string& what);
+
+/// Throws CLI::ValidationError if an explicit --calib (@p calib) is given with `--pose-frame lidar` and nothing
+/// else (@p calib_has_other_use: optimize's --ground-truth) reads it.
+void checkPoseFrameOptions(const std::string& command, const std::string& calib, io::PoseFrame frame,
+                           bool calib_has_other_use = false);
+
+/// Reads a KITTI or TUM trajectory in the LiDAR frame by the pose-frame rule (io/trajectory_frame.h: @p calib means
+/// cam0, @p frame, else the motion decides and a note says so on stderr); with @p frames > 0 it must have one pose
+/// per frame. Throws sgtllc::Error naming the file, the line and the problem, or what to add.
+Odometry readOdometry(const std::string& path, const std::string& calib, io::PoseFrame frame, size_t frames);
 
 /// The calib for a KITTI odometry of a sequence folder: @p calib if given, else SEQ_DIR/calib.txt if it exists (the
 /// KITTI convention: poses in cam0, Tr in the sequence's calib.txt), else none.

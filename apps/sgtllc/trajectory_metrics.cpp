@@ -94,7 +94,6 @@ void plotClosing(const std::string& path, const std::vector<Eigen::Isometry3d>& 
   data.ground_truth = ground_truth;
   data.odometry = odometry.poses;
   data.corrected = closing.poses;
-  data.cam0_axes = odometry.cam0;
   for (size_t k = 0; k < loops.size(); ++k) {
     data.loops.push_back({loops[k].edge.from, loops[k].edge.to,
                           closing.result.loops.at(k).decision == backend::LoopDecision::kAccepted});

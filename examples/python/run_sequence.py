@@ -26,10 +26,9 @@ def main():
 
     config = sgtllc.Config.from_yaml(args.config) if args.config else sgtllc.Config()
     seq = sgtllc.SequenceDir(args.sequence)
-    poses = sgtllc.read_poses(os.path.join(args.sequence, "poses.txt"))
+    # KITTI's poses.txt is in cam0: calib.txt's Tr brings it into the LiDAR frame (without one, the motion decides).
     calib = os.path.join(args.sequence, "calib.txt")
-    if os.path.exists(calib):
-        poses = sgtllc.lidar_poses(poses, sgtllc.read_calib(calib))
+    poses = sgtllc.read_poses(os.path.join(args.sequence, "poses.txt"), calib if os.path.exists(calib) else None)
     # Frame i of the folder is line int(NAME) of poses.txt (a folder may hold a subset, as data/kitti/00 does).
     positions = poses[[int(seq.frame_name(i)) for i in range(len(seq))], :3, 3]
 

@@ -1,4 +1,4 @@
-"""ScanAccumulator (issue 14): merges by hand-computed transforms, labels with their points, at most N scans."""
+"""ScanAccumulator: merges by hand-computed transforms, labels with their points, at most N scans."""
 import numpy as np
 import pytest
 

@@ -44,7 +44,8 @@ def test_pcd_without_a_label_field(tmp_path):
 
 
 def test_poses_and_calib_equal_numpy():
-    poses = sgtllc.read_poses(str(KITTI / "poses.txt"))
+    # KITTI's poses.txt is in cam0: as written with pose_frame="lidar", in the LiDAR frame through the calib.
+    poses = sgtllc.read_poses(str(KITTI / "poses.txt"), pose_frame="lidar")
     rows = np.loadtxt(KITTI / "poses.txt").reshape(-1, 3, 4)
     np.testing.assert_array_equal(poses[:, :3, :], rows)
     np.testing.assert_array_equal(poses[:, 3, :], np.tile([0, 0, 0, 1.0], (len(rows), 1)))
@@ -53,6 +54,8 @@ def test_poses_and_calib_equal_numpy():
     np.testing.assert_array_equal(Tr[:3], np.array(line.split()[1:], float).reshape(3, 4))
     lidar = sgtllc.lidar_poses(poses[:3], Tr)
     np.testing.assert_allclose(lidar[2], np.linalg.inv(Tr) @ poses[2] @ Tr, atol=1e-12)
+    np.testing.assert_allclose(sgtllc.read_poses(str(KITTI / "poses.txt"), str(KITTI / "calib.txt"))[:3], lidar,
+                               atol=1e-12)
 
 
 def test_node_files_round_trip(tmp_path):
@@ -95,7 +98,7 @@ def test_malformed_files_name_file_and_problem(tmp_path):
         sgtllc.read_kitti_bin(str(bad_bin))
     bad_poses = tmp_path / "poses.txt"
     bad_poses.write_text("1 0 0 0 0 1 0 0 0 0 1\n")
-    with pytest.raises(sgtllc.Error, match=r"poses\.txt:1: expected 12 numbers"):
+    with pytest.raises(sgtllc.Error, match=r"poses\.txt:1: 11 columns; expected 12"):
         sgtllc.read_poses(str(bad_poses))
     bad_nodes = tmp_path / "n.txt"
     bad_nodes.write_text("1 2 3\n")

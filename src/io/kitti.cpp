@@ -134,14 +134,24 @@ Eigen::Matrix4d readKittiCalibTr(const std::string& path) {
   const std::string text = detail::readWholeFile(path);
   size_t pos = 0;
   size_t line_no = 0;
+  size_t tr_line = 0;
+  Eigen::Matrix4d Tr;
   while (pos < text.size()) {
     ++line_no;
     const std::vector<std::string_view> tokens = splitBlanks(nextLine(text, pos));
-    if (!tokens.empty() && tokens.front() == "Tr:") {
-      return parseRowMajor3x4(tokens, 1, path + ":" + std::to_string(line_no));
+    if (tokens.empty() || tokens.front() != "Tr:") continue;
+    // Two Tr lines leave the transform ambiguous (a merged or concatenated file): refuse rather than pick one.
+    if (tr_line != 0) {
+      throw Error(path + ":" + std::to_string(line_no) + ": a second Tr: line (line " + std::to_string(tr_line) +
+                  " has one)");
     }
+    Tr = parseRowMajor3x4(tokens, 1, path + ":" + std::to_string(line_no));
+    tr_line = line_no;
   }
-  throw Error(path + ": no 'Tr:' line (the velodyne-to-cam0 transform of a KITTI odometry calib.txt)");
+  if (tr_line == 0) {
+    throw Error(path + ": no 'Tr:' line (the velodyne-to-cam0 transform of a KITTI odometry calib.txt)");
+  }
+  return Tr;
 }
 
 std::vector<Eigen::Matrix4d> lidarPoses(const std::vector<Eigen::Matrix4d>& cam_poses, const Eigen::Matrix4d& Tr) {

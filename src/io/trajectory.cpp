@@ -13,6 +13,7 @@
 #include "file_util.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/kitti_write.h"
+#include "sgtllc/io/quote.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -23,14 +24,15 @@ constexpr size_t kTumColumns = 8;
 /// Largest |RᵀR − I| accepted in a KITTI row: files written with 6 significant digits (KITTI's own `%e` poses,
 /// SemanticKITTI's `%g`) are off by ~1e-6; anything beyond 1e-3 is not a rotation (wrong column order, a scale).
 constexpr double kOrthonormalTolerance = 1e-3;
-/// Below this norm a TUM quaternion has no direction to normalise.
-constexpr double kMinQuaternionNorm = 1e-6;
+/// Largest |‖q‖ − 1| accepted in a TUM row: 6 written digits give ~1e-6; a quaternion off by more is not a
+/// rotation written by a tool (a scale, a wrong column), and normalising it would hide that.
+constexpr double kQuaternionNormTolerance = 1e-3;
 
 std::string where(const std::string& path, size_t line) { return path + ":" + std::to_string(line); }
 
-std::string number(double v) {
+std::string number(double v, int digits = 3) {
   char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.3g", v);
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
   return buf;
 }
 
@@ -83,8 +85,9 @@ Eigen::Isometry3d isometry(const Eigen::Matrix4d& M) {
   return T;
 }
 
-void checkRotation(const Eigen::Matrix4d& M, const std::string& at) {
-  const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
+}  // namespace
+
+void checkRotation(const Eigen::Matrix3d& R, const std::string& at) {
   const double err = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (err > kOrthonormalTolerance) {
     throw Error(at + ": rotation is not orthonormal (|RᵀR − I| = " + number(err) + ", at most " +
@@ -93,27 +96,42 @@ void checkRotation(const Eigen::Matrix4d& M, const std::string& at) {
   if (R.determinant() <= 0.0) throw Error(at + ": rotation has determinant " + number(R.determinant()) + " (a reflection)");
 }
 
-Trajectory readKitti(const std::string& path, const std::vector<Row>& rows, const std::string& calib_path) {
+namespace {
+
+/// The file's KITTI poses, rotations checked, in the file's own frame.
+Trajectory readKitti(const std::string& path, const std::vector<Row>& rows) {
   const std::vector<Eigen::Matrix4d> file_poses = readKittiPoses(path);  // no comments or blanks: pose i = row i
-  for (size_t i = 0; i < file_poses.size(); ++i) checkRotation(file_poses[i], where(path, rows[i].line));
+  for (size_t i = 0; i < file_poses.size(); ++i) {
+    checkRotation(file_poses[i].topLeftCorner<3, 3>(), where(path, rows[i].line));
+  }
   Trajectory t;
   t.format = TrajectoryFormat::kKitti;
-  std::vector<Eigen::Matrix4d> poses = file_poses;
-  if (!calib_path.empty()) {
-    t.calib_Tr = readKittiCalibTr(calib_path);
-    poses = lidarPoses(file_poses, *t.calib_Tr);
-    // An invertible but badly scaled Tr (say diag(1e300, 1e-300, 1)) overflows Tr⁻¹ · P · Tr: reject it rather
-    // than return non-finite poses (fuzz_trajectory found this; fuzz/README.md).
-    for (size_t i = 0; i < poses.size(); ++i) {
-      if (!poses[i].allFinite()) {
-        throw Error(calib_path + ": its Tr turns the pose of " + where(path, rows[i].line) +
-                    " into non-finite numbers (not a rigid velodyne-to-cam0 transform)");
-      }
-    }
-  }
-  t.poses.reserve(poses.size());
-  for (const Eigen::Matrix4d& M : poses) t.poses.push_back(isometry(M));
+  t.poses.reserve(file_poses.size());
+  for (const Eigen::Matrix4d& M : file_poses) t.poses.push_back(isometry(M));
   return t;
+}
+
+std::vector<Eigen::Matrix4d> matrices(const std::vector<Eigen::Isometry3d>& poses) {
+  std::vector<Eigen::Matrix4d> out;
+  out.reserve(poses.size());
+  for (const Eigen::Isometry3d& T : poses) out.push_back(T.matrix());
+  return out;
+}
+
+/// @p t (cam0 poses as read) converted to the LiDAR frame by @p Tr, the Tr of @p calib_path.
+void throughCalib(const std::string& path, const std::vector<Row>& rows, const std::string& calib_path,
+                  const Eigen::Matrix4d& Tr, Trajectory& t) {
+  t.calib_Tr = Tr;
+  const std::vector<Eigen::Matrix4d> poses = lidarPoses(matrices(t.poses), *t.calib_Tr);
+  // An invertible but badly scaled Tr (say diag(1e300, 1e-300, 1)) overflows Tr⁻¹ · P · Tr: reject it rather
+  // than return non-finite poses (fuzz_trajectory found this; fuzz/README.md).
+  for (size_t i = 0; i < poses.size(); ++i) {
+    if (!poses[i].allFinite()) {
+      throw Error(calib_path + ": its Tr turns the pose of " + where(path, rows[i].line) +
+                  " into non-finite numbers (not a rigid velodyne-to-cam0 transform)");
+    }
+    t.poses[i] = isometry(poses[i]);
+  }
 }
 
 Trajectory readTum(const std::string& path, const std::vector<Row>& rows) {
@@ -123,17 +141,18 @@ Trajectory readTum(const std::string& path, const std::vector<Row>& rows) {
     double v[kTumColumns];
     for (size_t k = 0; k < kTumColumns; ++k) {
       if (!detail::parseReal(row.tokens[k], v[k]) || !std::isfinite(v[k])) {
-        throw Error(where(path, row.line) + ": '" + std::string(row.tokens[k]) + "' is not a finite number");
+        throw Error(where(path, row.line) + ": " + quoteContent(row.tokens[k]) + " is not a finite number");
       }
     }
     if (!t.stamps.empty() && v[0] < t.stamps.back()) {
-      throw Error(where(path, row.line) + ": time stamp " + std::string(row.tokens[0]) +
+      throw Error(where(path, row.line) + ": time stamp " + quoteContent(row.tokens[0]) +
                   " is before the previous line's (poses must be in sequence order)");
     }
     Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);  // file order qx qy qz qw; Eigen's constructor takes w first
-    if (q.norm() < kMinQuaternionNorm) {
+    if (!(std::abs(q.norm() - 1.0) <= kQuaternionNormTolerance)) {
       throw Error(where(path, row.line) + ": quaternion (" + number(v[4]) + ", " + number(v[5]) + ", " +
-                  number(v[6]) + ", " + number(v[7]) + ") has norm " + number(q.norm()) + " (not a rotation)");
+                  number(v[6]) + ", " + number(v[7]) + ") has norm " + number(q.norm(), 6) +
+                  ", not 1 (a rotation's quaternion is a unit one)");
     }
     q.normalize();
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -165,7 +184,31 @@ Trajectory readTrajectory(const std::string& path, const std::string& calib_path
   const std::vector<Row> rows = poseRows(path, text, has_comments);
   if (rows.front().tokens.size() == kTumColumns) return readTum(path, rows);
   if (has_comments) throw Error(path + ": '#' comment lines in a KITTI pose file (pose i must be line i)");
-  return readKitti(path, rows, calib_path);
+  Trajectory t = readKitti(path, rows);
+  if (!calib_path.empty()) throughCalib(path, rows, calib_path, readKittiCalibTr(calib_path), t);
+  return t;
+}
+
+FramedTrajectory readTrajectory(const std::string& path, const std::string& calib_path, PoseFrame frame) {
+  const std::string text = detail::readWholeFile(path);
+  bool has_comments = false;
+  const std::vector<Row> rows = poseRows(path, text, has_comments);
+  FramedTrajectory out;
+  if (rows.front().tokens.size() == kTumColumns) {
+    if (frame == PoseFrame::kCam0) {
+      throw Error(path + ": a TUM file, read in the LiDAR frame as given; --pose-frame cam0 is for KITTI files");
+    }
+    out.trajectory = readTum(path, rows);
+    return out;
+  }
+  if (has_comments) throw Error(path + ": '#' comment lines in a KITTI pose file (pose i must be line i)");
+  out.trajectory = readKitti(path, rows);
+  // A calib that may apply is read first: a broken one is an error even where the motion then overrides it.
+  Eigen::Matrix4d Tr = Eigen::Matrix4d::Identity();
+  if (!calib_path.empty() && frame != PoseFrame::kLidar) Tr = readKittiCalibTr(calib_path);
+  out.choice = frameChoice(path, matrices(out.trajectory.poses), !calib_path.empty(), frame);
+  if (out.choice.through_calib) throughCalib(path, rows, calib_path, Tr, out.trajectory);
+  return out;
 }
 
 std::string trajectoryText(const Trajectory& trajectory) {
@@ -178,9 +221,7 @@ std::string trajectoryText(const Trajectory& trajectory) {
     for (size_t i = 0; i < trajectory.poses.size(); ++i) appendTumRow(text, trajectory.stamps[i], trajectory.poses[i]);
     return text;
   }
-  std::vector<Eigen::Matrix4d> poses;
-  poses.reserve(trajectory.poses.size());
-  for (const Eigen::Isometry3d& T : trajectory.poses) poses.push_back(T.matrix());
+  std::vector<Eigen::Matrix4d> poses = matrices(trajectory.poses);
   if (trajectory.calib_Tr) {
     const Eigen::Matrix4d& Tr = *trajectory.calib_Tr;
     const Eigen::Matrix4d Tr_inv = Tr.inverse();  // the full inverse, as lidarPoses uses

@@ -40,7 +40,7 @@ std::string defaultLabelPath(const std::string& bin_path);
 std::vector<Eigen::Matrix4d> readKittiPoses(const std::string& path);
 
 /// Reads the `Tr:` line of a KITTI odometry calib.txt (velodyne → cam0, p_cam = Tr · p_velo) as a 4×4 matrix.
-/// Throws if the file has no `Tr:` line or the line does not hold 12 numbers.
+/// Throws if the file has no `Tr:` line, has two, or the line does not hold 12 numbers.
 Eigen::Matrix4d readKittiCalibTr(const std::string& path);
 
 /// LiDAR-frame poses from cam0 poses: T_lidar_i = Tr⁻¹ · P_i · Tr (the exact 4×4 inverse of Tr is used).

@@ -9,7 +9,7 @@
 /// Errors are sgtllc::Error naming the file, the line and the problem, e.g.
 /// `odo.txt:7: 10 columns; expected 12 (KITTI: row-major 3x4 [R|t]) or 8 (TUM: t x y z qx qy qz qw)`,
 /// `odo.txt:3: 8 columns, but line 1 has 12 (one format per file)`,
-/// `odo.txt:2: quaternion (0, 0, 0, 0) has norm 0`, `odo.txt:4: rotation is not orthonormal (|RᵀR − I| = 0.2)`.
+/// `odo.txt:2: quaternion (2, 0, 0, 0) has norm 2, not 1`, `odo.txt:4: rotation is not orthonormal (|RᵀR − I| = 0.2)`.
 #pragma once
 
 #include <optional>
@@ -20,6 +20,7 @@
 #include <Eigen/Geometry>
 
 #include "sgtllc/io/output_file.h"
+#include "sgtllc/io/trajectory_frame.h"
 
 namespace sgtllc::io {
 
@@ -33,7 +34,8 @@ enum class TrajectoryFormat {
 struct Trajectory {
   TrajectoryFormat format = TrajectoryFormat::kKitti;
   /// T_world_frame (p_world = T · p_frame). In the LiDAR frame if read through a calib (KITTI) or from TUM
-  /// (taken as given), else in the file's frame (KITTI without calib: cam0 of frame 0). KITTI rotations are kept
+  /// (taken as given), else in the file's own frame (KITTI without calib: cam0 or LiDAR, as the file was written;
+  /// the pose-frame overload of readTrajectory settles which). KITTI rotations are kept
   /// as written (orthonormal to the file's precision, checked to 1e-3), so a file written back is the same.
   std::vector<Eigen::Isometry3d> poses;
   /// TUM time stamps (s), one per pose; empty for KITTI.
@@ -46,13 +48,26 @@ struct Trajectory {
 /// Reads a KITTI or TUM trajectory (told apart by column count). Blank lines at the end are ignored; a blank line
 /// followed by more poses is an error (pose i must be line i); `#` comment lines are allowed in TUM files only
 /// (TUM's own files start with them). KITTI rows: 12 finite numbers, rotation orthonormal within 1e-3 with
-/// determinant > 0. TUM rows: 8 finite numbers, quaternion norm ≥ 1e-6 (it is normalised), time stamps
+/// determinant > 0. TUM rows: 8 finite numbers, quaternion norm within 1e-3 of 1 (it is normalised), time stamps
 /// increasing. An empty file is an error (no poses).
 ///
 /// @p calib_path (optional): a KITTI calib.txt whose `Tr:` converts KITTI cam0 poses to the LiDAR frame
 /// (readKittiCalibTr / lidarPoses in kitti.h). It applies to KITTI files only: TUM files are taken as they are
 /// (LiDAR frame, like KISS-ICP's TUM output), and `calib_Tr` stays empty for them.
+/// Without a calib a KITTI file is returned in its own frame, whatever that is: the CLI and Python read through
+/// the overload below, which never guesses the frame silently.
 Trajectory readTrajectory(const std::string& path, const std::string& calib_path = "");
+
+/// A trajectory read by the pose-frame rule, and how its frame was settled.
+struct FramedTrajectory {
+  Trajectory trajectory;  ///< poses in the LiDAR frame (calib_Tr set if converted)
+  FrameChoice choice;     ///< choice.note: the line to print when the motion decided (TUM: empty)
+};
+
+/// Reads @p path with the rule of frameChoice() (trajectory_frame.h) for KITTI files: `--calib` (@p calib_path)
+/// means cam0, `--pose-frame` is @p frame, else the motion decides and says so in `choice.note`. TUM files are
+/// LiDAR poses as given (with @p frame cam0 an error). Throws sgtllc::Error naming the file and what to add.
+FramedTrajectory readTrajectory(const std::string& path, const std::string& calib_path, PoseFrame frame);
 
 /// The text of @p trajectory in its own format (and frame: cam0 again if it came through a calib). Numbers are
 /// written in their shortest exact form, so readTrajectory() gives back the same poses (to rounding of the
@@ -67,6 +82,11 @@ void writeTrajectory(const std::string& path, const Trajectory& trajectory,
 /// @p trajectory with its poses replaced by @p poses (same format, stamps and calib): the corrected trajectory
 /// of an odometry input. Throws sgtllc::Error if the counts differ.
 Trajectory withPoses(const Trajectory& trajectory, std::vector<Eigen::Isometry3d> poses);
+
+/// Throws sgtllc::Error `AT: rotation is not orthonormal (|RᵀR − I| = E, at most 0.001)` or `AT: rotation has
+/// determinant D (a reflection)` unless @p R is a rotation to a KITTI file's precision: the check every trajectory
+/// reader (and Python's pose arrays) applies.
+void checkRotation(const Eigen::Matrix3d& R, const std::string& at);
 
 /// Throws sgtllc::Error `PATH: N poses but the sequence has M frames (one pose per frame, in sequence order)`
 /// unless @p trajectory has exactly @p frames poses; @p path names the file in the message.
