@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "loop_closing.h"
 #include "sgtllc/eval/label_agreement.h"
 #include "sgtllc/eval/node_repeatability.h"
 #include "sgtllc/io/kitti.h"
@@ -24,6 +25,7 @@ namespace {
 
 struct RepeatabilityCliOptions {
   std::string sequence, labels_dir, poses, calib, config;
+  io::PoseFrame pose_frame = io::PoseFrame::kAuto;
   std::vector<std::string> pairs;  ///< "Q:M" frame names
   int gap = 1;
   double max_distance = 20.0;
@@ -46,17 +48,14 @@ struct PairResult {
   std::vector<eval::NodeRepeatability> ways;  ///< one per Way
 };
 
-/// LiDAR poses by frame number: the poses file through the calib's Tr when there is one (KITTI's cam0 poses),
-/// else as written (LiDAR poses, as nuScenes' conversion and KISS-ICP write them).
-std::vector<Eigen::Matrix4d> lidarPosesOf(const RepeatabilityCliOptions& o, std::string* described) {
+/// LiDAR poses by frame number: the poses file (KITTI or TUM) read by the pose-frame rule, through --calib or
+/// SEQ_DIR/calib.txt when there is one (io/trajectory_frame.h).
+std::vector<Eigen::Isometry3d> lidarPosesOf(const RepeatabilityCliOptions& o, std::string* described) {
   const std::string poses = o.poses.empty() ? (fs::path(o.sequence) / "poses.txt").string() : o.poses;
-  std::string calib = o.calib;
-  if (calib.empty() && fs::is_regular_file(fs::path(o.sequence) / "calib.txt")) {
-    calib = (fs::path(o.sequence) / "calib.txt").string();
-  }
-  const std::vector<Eigen::Matrix4d> file = io::readKittiPoses(poses);
-  *described = calib.empty() ? poses + " (LiDAR poses: no calib)" : poses + " through " + calib;
-  return calib.empty() ? file : io::lidarPoses(file, io::readKittiCalibTr(calib));
+  const std::string calib = o.pose_frame == io::PoseFrame::kLidar ? o.calib : sequenceCalib(o.calib, o.sequence);
+  Odometry read = readOdometry(poses, calib, o.pose_frame, 0);
+  *described = poses + (read.trajectory.calib_Tr ? " through " + calib : std::string(" (LiDAR poses)"));
+  return std::move(read.poses);
 }
 
 long frameNumber(const std::string& name, const std::string& dir) {
@@ -111,7 +110,7 @@ void runRepeatability(const RepeatabilityCliOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
   const io::SequenceDir seq(o.sequence, io::SequenceLabels{true, o.labels_dir});
   std::string poses_from;
-  const std::vector<Eigen::Matrix4d> poses = lidarPosesOf(o, &poses_from);
+  const std::vector<Eigen::Isometry3d> poses = lidarPosesOf(o, &poses_from);
   const auto pairs = pairIndices(o, seq);
 
   std::vector<Way> ways;
@@ -152,7 +151,7 @@ void runRepeatability(const RepeatabilityCliOptions& o) {
       throw Error(poses_from + ": no pose for frame " + std::to_string(std::max(nq, nm)) + " (" +
                   std::to_string(poses.size()) + " poses)");
     }
-    const Eigen::Isometry3d T_m_q(poses[nm].inverse() * poses[nq]);
+    const Eigen::Isometry3d T_m_q = poses[nm].inverse() * poses[nq];
     PairResult r{seq.frameName(q), seq.frameName(m), T_m_q.translation().norm(), {}};
     if (r.distance > o.max_distance) {
       ++skipped;
@@ -232,8 +231,8 @@ void addRepeatabilityCommand(CLI::App& app) {
   cmd->add_option("--labels-dir", o->labels_dir, "read NAME.label files from this folder instead of SEQ_DIR/labels");
   cmd->add_option("--poses", o->poses, "poses file (default SEQ_DIR/poses.txt; line i = frame i)");
   cmd->add_option("--calib", o->calib,
-                  "calib.txt whose Tr takes cam0 poses to the LiDAR frame (default SEQ_DIR/calib.txt if it exists; "
-                  "without one the poses are LiDAR poses)");
+                  "calib.txt whose Tr takes cam0 poses to the LiDAR frame (default SEQ_DIR/calib.txt if it exists)");
+  addPoseFrameOption(*cmd, o->pose_frame, "the poses file");
   cmd->add_option("--pair", o->pairs, "QUERY:MATCH scan names to compare (repeatable; default: each scan with the --gap-th next)");
   cmd->add_option("--gap", o->gap, "compare each scan with the one this many scans after it")->check(CLI::Range(1, 1000000));
   cmd->add_option("--max-distance", o->max_distance, "skip pairs whose sensors are farther apart (m)")
@@ -244,7 +243,10 @@ void addRepeatabilityCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
   cmd->add_flag("--json", o->json, "print one JSON object");
-  cmd->callback([o] { runRepeatability(*o); });
+  cmd->callback([o] {
+    checkPoseFrameOptions("repeatability", o->calib, o->pose_frame, false);
+    runRepeatability(*o);
+  });
 }
 
 }  // namespace sgtllc::cli
