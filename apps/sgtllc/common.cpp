@@ -77,7 +77,8 @@ LabeledCloud loadScan(const std::string& path, const std::string& label_path, co
   if (ext != ".bin") {
     throw Error(path + ": unknown input format '" + ext + "' (expected a KITTI .bin, a .pcd or a .txt node file)");
   }
-  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path);
+  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path,
+                             config.labels.format);
 }
 
 }  // namespace

@@ -27,7 +27,8 @@ double msSince(std::chrono::steady_clock::time_point start) {
 FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config,
                                        const FrameSourceOptions& options) {
   const bool geometric = config.labeller.source == LabelSource::kGeometric;
-  auto seq = std::make_shared<io::SequenceDir>(dir, io::SequenceLabels{!geometric, options.labels_dir});
+  auto seq = std::make_shared<io::SequenceDir>(
+      dir, io::SequenceLabels{!geometric, options.labels_dir, config.labels.format});
   const LabelConfig labels = effectiveLabelConfig(config);
   auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
   auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only
