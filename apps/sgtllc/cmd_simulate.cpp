@@ -216,12 +216,14 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--scene", o->scene, "world preset (with --world-of: the first session's)")
       ->check(CLI::IsMember({"urban", "suburban", "rural"}))
       ->capture_default_str();
-  cmd->add_option("--sensor", o->sensor, "LiDAR: Velodyne HDL-64E or Livox Mid-70")
-      ->check(CLI::IsMember({"hdl64", "mid70"}))
+  cmd->add_option("--sensor", o->sensor,
+                  "LiDAR: Velodyne HDL-64E, HDL-32E (32 beams +10.67..-30.67 deg, 70 m, ~35k rays a turn, as "
+                  "nuScenes) or Livox Mid-70")
+      ->check(CLI::IsMember({"hdl64", "hdl32", "mid70"}))
       ->capture_default_str();
   cmd->add_option("--accumulate", o->accumulate,
-                  "raw scans merged into each frame (default: hdl64 1, mid70 10); `--sensor mid70 --accumulate 1` "
-                  "writes the raw scans, for `run|eval --accumulate N`")
+                  "raw scans merged into each frame (default: hdl64 and hdl32 1, mid70 10); `--sensor mid70 "
+                  "--accumulate 1` writes the raw scans, for `run|eval --accumulate N`")
       ->check(CLI::Range(1, 100));
   cmd->add_option("--label-noise", o->label_noise,
                   "segmentation error rate R: 0 = ground truth; the default is like RangeNet++")
