@@ -12,7 +12,10 @@
 #include <iterator>
 
 #include "sgtllc/io/sequence.h"
+#include "sgtllc/labels.h"
+#include "sgtllc/sim/label_space.h"
 #include "sgtllc/sim/manifest.h"
+#include "sgtllc/sim/world.h"
 #include "sgtllc/sim/sensor.h"
 
 namespace sgtllc::sim {
@@ -99,6 +102,49 @@ TEST(SimHdl32, ShortSequenceHasAboutThirtyThousandPointsAScan) {
     EXPECT_LT(far, 70.5) << i;  // 70 m and a few cm of range noise
   }
   EXPECT_EQ(readManifest(dir.string()).sensor.kind, SensorKind::kHdl32);
+  fs::remove_all(dir);
+}
+
+TEST(SimHdl32, NuScenesIdsOfTheSimulatorsClasses) {
+  using namespace semantic;  // the simulator's SemanticKITTI ids; sgtllc::kBuilding etc. are class indices
+  const std::pair<uint32_t, int> table[] = {
+      {kBuilding, 28}, {kOtherStructure, 28}, {kPole, 28}, {kTrafficSign, 28}, {kVegetation, 30}, {kTrunk, 30},
+      {kTerrain, 27},  {kFence, 9},           {kRoad, 24}, {kParking, 24},     {kSidewalk, 26},   {kOtherGround, 25},
+      {kCar, 17},      {kTruck, 23},          {kOtherVehicle, 16}, {kPerson, 2}, {kOtherObject, 29},
+      {kMovingCar, 32}, {kMovingPerson, 39},  {kUnlabeled, 0}, {12345, 0}};
+  for (const auto& [id, want] : table) {
+    EXPECT_EQ(nuScenesId(id), want) << id;
+    EXPECT_EQ(nuScenesId((77u << 16) | id), want) << id;  // instance bits ignored
+  }
+  // Through the nuscenes preset, the simulator's building/pole/sign become building, trunk vegetation.
+  LabelConfig nuscenes;
+  nuscenes.preset = LabelPreset::kNuScenes;
+  const LabelMap map(nuscenes);
+  EXPECT_EQ(map.classOf(nuScenesId(kPole)), sgtllc::kBuilding);
+  EXPECT_EQ(map.classOf(nuScenesId(kTrunk)), sgtllc::kVegetation);
+  EXPECT_EQ(map.classOf(nuScenesId(kFence)), sgtllc::kFence);
+  EXPECT_EQ(map.classOf(nuScenesId(kTerrain)), sgtllc::kTerrain);
+  EXPECT_EQ(map.classOf(nuScenesId(kCar)), sgtllc::kDropped);
+  EXPECT_EQ(parseLabelSpace("nuscenes"), LabelSpace::kNuScenes);
+  EXPECT_THROW(parseLabelSpace("kitti"), Error);
+}
+
+TEST(SimHdl32, LabelSpaceNuScenesWritesOneByteAPointOfTheSameScans) {
+  const fs::path dir = fs::temp_directory_path() / ("sgtllc_sim_hdl32_ns_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string common = " --frames 2 --seed 5 --sensor hdl32 --threads 2 --no-preview > /dev/null 2>&1";
+  const std::string cli = std::string(SGTLLC_CLI) + " simulate --out ";
+  ASSERT_EQ(std::system((cli + (dir / "kitti").string() + common).c_str()), 0);
+  ASSERT_EQ(std::system((cli + (dir / "nus").string() + " --label-space nuscenes" + common).c_str()), 0);
+  const io::SequenceDir kitti((dir / "kitti").string()), nus((dir / "nus").string());
+  ASSERT_EQ(nus.size(), 2u);
+  for (size_t i = 0; i < nus.size(); ++i) {
+    const LabeledCloud a = kitti.load(i), b = nus.load(i);
+    ASSERT_EQ(fs::file_size(nus.labelPath(i)), b.points.size());  // one byte a point
+    ASSERT_EQ(a.points, b.points);
+    ASSERT_EQ(b.labels.size(), a.labels.size());
+    for (size_t k = 0; k < a.labels.size(); ++k) ASSERT_EQ(b.labels[k], nuScenesId(a.labels[k])) << k;
+  }
   fs::remove_all(dir);
 }
 
