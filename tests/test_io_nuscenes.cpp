@@ -14,6 +14,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/sequence.h"
 #include "sgtllc/labels.h"
+#include "sgtllc/map/map.h"
 #include "test_io_support.h"
 #include "test_support.h"
 
@@ -110,6 +111,15 @@ TEST(NuScenesLabels, BundledConfigAndYamlKeys) {
   EXPECT_EQ(sgtllc::io::parseConfig(text).labels.format, LabelFormat::kUint8);
   EXPECT_THAT([] { sgtllc::io::parseConfig("labels:\n  format: uint16\n"); },
               ::testing::ThrowsMessage<Error>(HasSubstr("expected one of auto | uint32 | uint8")));
+}
+
+TEST(NuScenesLabels, LabelFormatIsNotAMapField) {
+  // How label files hold the ids changes no node: maps built before the key existed stay loadable.
+  sgtllc::Config uint8 = nuScenesConfig();
+  uint8.labels.format = LabelFormat::kUint8;
+  EXPECT_EQ(sgtllc::map::mapConfig(uint8), sgtllc::map::mapConfig(nuScenesConfig()));
+  for (const auto& [key, value] : sgtllc::map::mapConfig(uint8)) EXPECT_NE(key, "labels.format");
+  EXPECT_NE(sgtllc::map::mapConfig(nuScenesConfig()), sgtllc::map::mapConfig(sgtllc::Config()));  // the preset is
 }
 
 class OneByteLabels : public sgtllc::test::TempDirTest {

@@ -66,7 +66,7 @@ std::vector<uint32_t> readLabelsOf(const std::string& path, uint64_t points, Lab
                                    const std::string& scan) {
   FilePtr file = detail::openForReading(path);
   const uint64_t bytes = fileSize(file.get(), path);
-  const bool is32 = bytes == 4 * points, is8 = bytes == points;
+  const bool is32 = bytes % 4 == 0 && bytes / 4 == points, is8 = bytes == points;  // no overflow of 4·points
   const bool bytewise = format == LabelFormat::kUint8 || (format == LabelFormat::kAuto && !is32);
   if (bytewise ? is8 : is32) {
     if (!bytewise) return readRecords<uint32_t>(file.get(), path, bytes);
