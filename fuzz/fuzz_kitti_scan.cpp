@@ -1,6 +1,6 @@
-// KITTI scans: a .bin (x y z intensity float32 records) and its SemanticKITTI .label (uint32 per point).
+// KITTI scans: a .bin (x y z intensity float32 records) and its .label (a uint32 or one byte per point).
 // Input layout: byte 0 chooses where the rest splits into the .bin part and the .label part, so one input
-// exercises readKittiBin, readLabelFile and the point/label count check of readLabeledScan.
+// exercises readKittiBin, readLabelFile and the point/label count check of readLabeledScan in every label format.
 #include <cstddef>
 #include <cstdint>
 
@@ -25,9 +25,27 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fuzz::readsOrRejects([&] {
     fuzz::require(io::readLabelFile(label.path()).size() * 4 == rest.size() - split, "one label per 4 bytes");
   });
-  fuzz::readsOrRejects([&] {
-    const LabeledCloud cloud = io::readLabeledScan(bin.path(), label.path());
-    fuzz::require(cloud.points.size() == cloud.labels.size(), "as many labels as points");
-  });
+  const size_t label_bytes = rest.size() - split;
+  for (const LabelFormat format : {LabelFormat::kAuto, LabelFormat::kUint32, LabelFormat::kUint8}) {
+    fuzz::readsOrRejects([&] {
+      const LabeledCloud cloud = io::readLabeledScan(bin.path(), label.path(), format);
+      const size_t n = cloud.points.size();
+      fuzz::require(cloud.labels.size() == n, "as many labels as points");
+      fuzz::require(label_bytes == n || label_bytes == 4 * n, "one byte or 4 a point");
+      fuzz::require(format != LabelFormat::kUint8 || label_bytes == n, "uint8: one byte a point");
+      fuzz::require(format != LabelFormat::kUint32 || label_bytes == 4 * n, "uint32: 4 bytes a point");
+      const bool bytewise = format == LabelFormat::kUint8 || label_bytes != 4 * n;
+      if (bytewise) {
+        for (size_t i = 0; i < cloud.labels.size(); ++i) {
+          fuzz::require(cloud.labels[i] == static_cast<uint8_t>(rest[split + i]), "a byte is its id");
+        }
+      }
+    });
+    // The count-only reader, for a scan as long as the .bin part would be.
+    fuzz::readsOrRejects([&] {
+      const size_t points = split / 16;
+      fuzz::require(io::readLabelFile(label.path(), points, format).size() == points, "one label per point");
+    });
+  }
   return 0;
 }

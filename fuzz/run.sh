@@ -25,6 +25,11 @@ for f in 000052 004501; do
   { printf '\314'; head -c 1024 "data/kitti/00/velodyne/$f.bin"; head -c 256 "data/kitti/00/labels/$f.label"; } \
     > "$seeds/kitti_scan/$f"
 done
+# One-byte labels (data/nuscenes): byte 0 = 240 splits the rest 1024 : 64, 64 points and their 64 label bytes.
+for f in 0001/000000 0006/000000; do
+  { printf '\360'; head -c 1024 "data/nuscenes/${f%/*}/velodyne/${f#*/}.bin";
+    head -c 64 "data/nuscenes/${f%/*}/labels/${f#*/}.label"; } > "$seeds/kitti_scan/nuscenes_${f%/*}"
+done
 head -n 3 data/kitti/00/poses.txt > "$seeds/kitti_poses/poses_head.txt"
 cp data/kitti/00/calib.txt "$seeds/kitti_poses/calib.txt"
 # Trajectories: the first poses of the KITTI and TUM excerpts, alone (byte 0 even) and after KITTI 00's calib

@@ -16,7 +16,12 @@ void enums(py::module_& m) {
       .value("SEMANTIC_KITTI_LEARNING", LabelPreset::kSemanticKittiLearning, "SemanticKITTI learning ids 13..19")
       .value("MULRAN", LabelPreset::kMulRan, "MulRan: train id = label + 1")
       .value("MCD", LabelPreset::kMcd, "MCD: the authors' 29-entry map")
-      .value("CUSTOM", LabelPreset::kCustom, "LabelConfig.custom_map only");
+      .value("CUSTOM", LabelPreset::kCustom, "LabelConfig.custom_map only")
+      .value("NUSCENES", LabelPreset::kNuScenes, "nuScenes-lidarseg: manmade, barrier, vegetation, terrain kept");
+  py::enum_<LabelFormat>(m, "LabelFormat", "How label files store the ids (YAML labels.format).")
+      .value("AUTO", LabelFormat::kAuto, "by the file size: 4 bytes a point uint32, 1 byte uint8 (default)")
+      .value("UINT32", LabelFormat::kUint32, "one uint32 a point (SemanticKITTI)")
+      .value("UINT8", LabelFormat::kUint8, "one byte a point (nuScenes-lidarseg)");
   py::enum_<CentreSource>(m, "CentreSource", "Where a node's centre comes from (cluster.centre).")
       .value("POINTS", CentreSource::kPoints, "mean of the cluster's original points (default)")
       .value("VOXELS", CentreSource::kVoxels, "mean of the cluster's voxel centroids (authors' code)");
@@ -64,6 +69,7 @@ void sections(py::module_& m) {
   py::class_<LabelConfig>(m, "LabelConfig", "Label convention and class set (labels.*).")
       .def(py::init<>())
       .def_readwrite("preset", &LabelConfig::preset, "id convention of the input labels")
+      .def_readwrite("format", &LabelConfig::format, "how label files store the ids")
       .def_readwrite("custom_map", &LabelConfig::custom_map, "raw id -> class index or -1 (preset CUSTOM)")
       .def_readwrite("extra_classes", &LabelConfig::extra_classes, "classes 7, 8, ... beyond the paper's seven")
       .def("num_classes", &LabelConfig::numClasses, "C: the paper's seven plus the extra classes")

@@ -1,5 +1,6 @@
 // File readers (include/sgtllc/io/): KITTI scans, labels, poses and calib, PCD, node files, sequence folders.
 // A missing file raises FileNotFoundError; a malformed one sgtllc.Error naming the file (and line) and the problem.
+#include <filesystem>
 #include <optional>
 
 #include <pybind11/stl.h>
@@ -82,28 +83,38 @@ void bindIo(py::module_& m) {
   m.def("read_kitti_bin", &kittiBin, py::arg("path"),
         "Reads a KITTI velodyne scan as an (N, 4) float32 array: x, y, z (m), intensity.");
   m.def("read_labels",
-        [](const std::string& path) {
+        [](const std::string& path, std::optional<size_t> point_count, LabelFormat format) {
           requireFile(path);
           std::vector<uint32_t> labels;
           {
             py::gil_scoped_release release;
-            labels = io::readLabelFile(path);
+            // Without a point count only the file tells the size: uint8 takes every byte, else uint32 words.
+            if (point_count) {
+              labels = io::readLabelFile(path, *point_count, format);
+            } else if (format == LabelFormat::kUint8) {
+              labels = io::readLabelFile(path, static_cast<size_t>(std::filesystem::file_size(path)), format);
+            } else {
+              labels = io::readLabelFile(path);
+            }
           }
           return labelsArray(std::move(labels));
         },
-        py::arg("path"),
-        "Reads a SemanticKITTI .label file as an (N,) uint32 array (semantic id = low 16 bits, instance = high 16).");
+        py::arg("path"), py::arg("point_count") = py::none(), py::arg("format") = LabelFormat::kAuto,
+        "Reads a label file as an (N,) uint32 array: SemanticKITTI uint32 words (semantic id = low 16 bits,\n"
+        "instance = high 16) or one byte a point (nuScenes-lidarseg). With point_count, format AUTO tells the two\n"
+        "apart by size and any other size raises; without it, AUTO and UINT32 read uint32 words.");
   m.def("default_label_path", &io::defaultLabelPath, py::arg("bin_path"),
         "The label file of a scan: DIR/../labels/NAME.label if it exists, else DIR/NAME.label.");
   m.def("read_labeled_scan",
-        [](const std::string& bin_path, const std::string& label_path) {
+        [](const std::string& bin_path, const std::string& label_path, LabelFormat format) {
           const std::string labels = label_path.empty() ? io::defaultLabelPath(bin_path) : label_path;
           requireFile(bin_path);
           requireFile(labels);
-          return readCloud([&] { return io::readLabeledScan(bin_path, labels); });
+          return readCloud([&] { return io::readLabeledScan(bin_path, labels, format); });
         },
-        py::arg("bin_path"), py::arg("label_path") = "",
-        "Reads a scan and its labels (default: default_label_path) and checks that the counts agree.\n"
+        py::arg("bin_path"), py::arg("label_path") = "", py::arg("format") = LabelFormat::kAuto,
+        "Reads a scan and its labels (default: default_label_path; uint32 or one byte a point, see read_labels)\n"
+        "and checks that there is one label a point.\n"
         "Returns (points (N, 3) float32, labels (N,) uint32).");
   m.def("read_pcd",
         [](const std::string& path, const std::string& label_field) {

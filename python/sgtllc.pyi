@@ -17,7 +17,9 @@ class ConfigError(Error):
 
 # --- configuration (config.cpp, config_backend.cpp) ---
 class LabelPreset(Enum):
-    SEMANTIC_KITTI_RAW: int; SEMANTIC_KITTI_LEARNING: int; MULRAN: int; MCD: int; CUSTOM: int
+    SEMANTIC_KITTI_RAW: int; SEMANTIC_KITTI_LEARNING: int; MULRAN: int; MCD: int; CUSTOM: int; NUSCENES: int
+class LabelFormat(Enum):
+    AUTO: int; UINT32: int; UINT8: int
 class CentreSource(Enum):
     POINTS: int; VOXELS: int
 class SubVectorOrder(Enum):
@@ -49,6 +51,7 @@ class ExtraClassList(MutableSequence[ExtraClass]): ...
 class CustomLabelMap(MutableMapping[int, int]): ...
 class LabelConfig:
     preset: LabelPreset
+    format: LabelFormat
     custom_map: CustomLabelMap
     extra_classes: ExtraClassList
     def num_classes(self) -> int: ...
@@ -349,9 +352,11 @@ def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndar
 def label_scan_ids(points: ArrayLike, config: LabellerConfig = ...) -> np.ndarray: ...  # (N,) uint32 SemanticKITTI ids
 def apply_labeller(points: ArrayLike, labels: ArrayLike, config: Config) -> np.ndarray: ...  # (N,) uint32 ids as the node extraction sees them
 def read_kitti_bin(path: str) -> np.ndarray: ...  # (N, 4) float32
-def read_labels(path: str) -> np.ndarray: ...  # (N,) uint32
+def read_labels(path: str, point_count: Optional[int] = None,
+                format: LabelFormat = LabelFormat.AUTO) -> np.ndarray: ...  # (N,) uint32
 def default_label_path(bin_path: str) -> str: ...
-def read_labeled_scan(bin_path: str, label_path: str = "") -> Tuple[np.ndarray, np.ndarray]: ...
+def read_labeled_scan(bin_path: str, label_path: str = "",
+                      format: LabelFormat = LabelFormat.AUTO) -> Tuple[np.ndarray, np.ndarray]: ...
 def read_pcd(path: str, label_field: str = "label") -> Tuple[np.ndarray, np.ndarray]: ...
 def read_pcd_points(path: str) -> np.ndarray: ...  # (N, 3) float32
 # KITTI or TUM, LiDAR frame; KITTI: calib's Tr for cam0 poses, pose_frame "auto" | "lidar" | "cam0" (as --pose-frame)

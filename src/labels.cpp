@@ -23,6 +23,13 @@ constexpr std::pair<uint16_t, int> kMcdMap[] = {
     {0, kTrafficSign}, {3, kTrafficSign}, {8, kTrafficSign}, {9, kTrafficSign}, {21, kTrafficSign},
     {22, kTrafficSign}};
 
+// nuScenes-lidarseg index → class (algorithm §1 "nuScenes"): 28 static.manmade holds buildings, walls, poles and
+// signs alike, so it is building; 9 movable_object.barrier is fence-like. Ids 0..31 are its classes, 32..39 the
+// moving objects of the KITTI-layout conversions; all others are dropped (no trunk, pole or traffic-sign exists).
+constexpr std::pair<uint16_t, int> kNuScenesMap[] = {
+    {28, kBuilding}, {9, kFence}, {30, kVegetation}, {27, kTerrain}};
+constexpr uint16_t kNuScenesLastId = 39;
+
 }  // namespace
 
 LabelMap::LabelMap(const LabelConfig& config) : table_(kTableSize, kDropped), known_(kTableSize, 0) {
@@ -50,6 +57,10 @@ LabelMap::LabelMap(const LabelConfig& config) : table_(kTableSize, kDropped), kn
     case LabelPreset::kMcd:
       know_range(0, 28);
       for (const auto& [id, cls] : kMcdMap) set(id, cls);
+      break;
+    case LabelPreset::kNuScenes:
+      know_range(0, kNuScenesLastId);
+      for (const auto& [id, cls] : kNuScenesMap) set(id, cls);
       break;
     case LabelPreset::kCustom:
       for (const auto& [id, cls] : config.custom_map) {

@@ -136,6 +136,26 @@ TEST(Labels, McdDroppedAndUnknown) {
   }
 }
 
+TEST(Labels, NuScenesEveryId) {
+  // docs/algorithm.md §1 "nuScenes": manmade, barrier, vegetation, terrain are kept; ids 0..39 are the label space
+  // (32..39 the moving objects of the KITTI-layout conversions).
+  const std::map<uint32_t, int> classes = {
+      {28, sgtllc::kBuilding}, {9, sgtllc::kFence}, {30, sgtllc::kVegetation}, {27, sgtllc::kTerrain}};
+  expectTable(mapFor(LabelPreset::kNuScenes), classes, range(0, 39));
+}
+
+TEST(Labels, NuScenesExtraClassClaimsDroppedCar) {
+  LabelConfig config;
+  config.preset = LabelPreset::kNuScenes;
+  config.extra_classes = {{"vehicle", {17, 32}}};
+  const LabelMap map(config);
+  EXPECT_EQ(map.classOf(17), sgtllc::kNumPaperClasses);
+  EXPECT_EQ(map.classOf(32), sgtllc::kNumPaperClasses);
+  EXPECT_EQ(map.classOf(24), kDropped);  // driveable surface
+  EXPECT_TRUE(map.isKnown(31));          // ego vehicle: known, dropped
+  EXPECT_FALSE(map.isKnown(40));
+}
+
 TEST(Labels, CustomMap) {
   LabelConfig config;
   config.preset = LabelPreset::kCustom;

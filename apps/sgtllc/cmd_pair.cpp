@@ -227,7 +227,8 @@ void addPairCommand(CLI::App& app) {
       ->required();
   cmd->add_option("MATCH", o->match, "candidate scan it may revisit")->required();
   cmd->add_option("--labels-query", o->labels_query,
-                  "labels of QUERY (default: ../labels/NAME.label beside velodyne/NAME.bin, else NAME.label)");
+                  "labels of QUERY, a uint32 or one byte a point (labels.format) (default: ../labels/NAME.label "
+                  "beside velodyne/NAME.bin, else NAME.label)");
   cmd->add_option("--labels-match", o->labels_match, "labels of MATCH (same default)");
   cmd->add_option("--label-field", o->label_field, "PCD field holding the per-point label")->capture_default_str();
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");

@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "common.h"
 #include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/sim/label_space.h"
 #include "sgtllc/sim/manifest.h"
 #include "sgtllc/sim/preview.h"
 #include "sgtllc/sim/revisit_fit.h"
@@ -32,6 +33,7 @@ struct SimulateOptions {
   bool seed_given = false, scene_given = false;
   std::string scene = "urban";
   std::string sensor = "hdl64";
+  std::string label_space = "semantickitti";
   int accumulate = 0;
   double label_noise = sim::kDefaultLabelNoise;
   int revisits = -1;
@@ -182,8 +184,14 @@ void simulate(const SimulateOptions& o) {
   const sim::SequenceStats stats =
       sim::writeSequence(simulator, w, [&](int done) { progress.update(static_cast<size_t>(done), ""); });
   progress.finish();
+  const bool nuscenes = sim::parseLabelSpace(o.label_space) == sim::LabelSpace::kNuScenes;
+  if (nuscenes) sim::rewriteLabelsAsNuScenes(o.out, stats.frames);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   printSummary(simulator, stats, o.out, seconds);
+  if (nuscenes) {
+    std::cout << "labels/: nuScenes-lidarseg ids, one byte a point (the shares above are of the simulator's classes); "
+                 "read them with --config configs/nuscenes.yaml\n";
+  }
   // --force never deletes: frames of an earlier, longer run stay and would be read as part of this sequence.
   size_t stale = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(o.out) / "velodyne")) {
@@ -216,12 +224,19 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--scene", o->scene, "world preset (with --world-of: the first session's)")
       ->check(CLI::IsMember({"urban", "suburban", "rural"}))
       ->capture_default_str();
-  cmd->add_option("--sensor", o->sensor, "LiDAR: Velodyne HDL-64E or Livox Mid-70")
-      ->check(CLI::IsMember({"hdl64", "mid70"}))
+  cmd->add_option("--sensor", o->sensor,
+                  "LiDAR: Velodyne HDL-64E, HDL-32E (32 beams +10.67..-30.67 deg, 70 m, ~35k rays a turn, as "
+                  "nuScenes) or Livox Mid-70")
+      ->check(CLI::IsMember({"hdl64", "hdl32", "mid70"}))
+      ->capture_default_str();
+  cmd->add_option("--label-space", o->label_space,
+                  "ids of labels/: SemanticKITTI raw ids (uint32) or nuScenes-lidarseg's (one byte a point; building, "
+                  "pole and sign 28, vegetation and trunk 30, terrain 27, fence 9, road 24, car 17, ...)")
+      ->check(CLI::IsMember({"semantickitti", "nuscenes"}))
       ->capture_default_str();
   cmd->add_option("--accumulate", o->accumulate,
-                  "raw scans merged into each frame (default: hdl64 1, mid70 10); `--sensor mid70 --accumulate 1` "
-                  "writes the raw scans, for `run|eval --accumulate N`")
+                  "raw scans merged into each frame (default: hdl64 and hdl32 1, mid70 10); `--sensor mid70 "
+                  "--accumulate 1` writes the raw scans, for `run|eval --accumulate N`")
       ->check(CLI::Range(1, 100));
   cmd->add_option("--label-noise", o->label_noise,
                   "segmentation error rate R: 0 = ground truth; the default is like RangeNet++")

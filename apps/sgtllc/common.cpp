@@ -75,7 +75,8 @@ LabeledCloud loadLabelledScan(const std::string& path, const std::string& label_
   if (ext != ".bin") {
     throw Error(path + ": unknown input format '" + ext + "' (expected a KITTI .bin, a .pcd or a .txt node file)");
   }
-  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path);
+  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path,
+                             config.labels.format);
 }
 
 LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field,

@@ -31,6 +31,14 @@ enum class LabelPreset {
   kMulRan,                 ///< MulRan: train id = label + 1
   kMcd,                    ///< MCD: the authors' 29-entry map
   kCustom,                 ///< LabelConfig::custom_map only
+  kNuScenes,               ///< nuScenes-lidarseg's 32 classes (+ moving 32..39): manmade, barrier, vegetation, terrain
+};
+
+/// How a label file stores its ids (the readers in sgtllc/io; the core never opens files).
+enum class LabelFormat {
+  kAuto,    ///< from the file size: 4·N bytes → uint32, N bytes → uint8 (N = the scan's point count)
+  kUint32,  ///< one little-endian uint32 per point (SemanticKITTI .label)
+  kUint8,   ///< one byte per point (nuScenes-lidarseg .bin and its KITTI-layout conversions)
 };
 
 /// A class beyond the paper's seven (e.g. vehicle), declared by the configuration. It becomes class index
@@ -49,6 +57,7 @@ struct ExtraClass {
 
 struct LabelConfig {
   LabelPreset preset = LabelPreset::kSemanticKittiRaw;  ///< id convention of the input labels (algorithm §1, §8)
+  LabelFormat format = LabelFormat::kAuto;               ///< how label files store the ids (algorithm §1)
   /// Raw id → stable class index (0..C−1) or −1 (known, dropped). Used when preset is kCustom; ids not listed are
   /// unknown.
   std::map<uint32_t, int> custom_map;

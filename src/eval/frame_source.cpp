@@ -28,7 +28,8 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
                                        const FrameSourceOptions& options) {
   auto labeller = std::make_shared<const label::CloudLabeller>(config.labels, config.labeller);
   const bool geometric = !labeller->readsLabelFiles();
-  auto seq = std::make_shared<io::SequenceDir>(dir, io::SequenceLabels{!geometric, options.labels_dir});
+  auto seq = std::make_shared<io::SequenceDir>(
+      dir, io::SequenceLabels{!geometric, options.labels_dir, config.labels.format});
   const LabelConfig& labels = labeller->nodeLabels();
   auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
   auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only

@@ -243,7 +243,14 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                                    {"semantickitti_learning", LabelPreset::kSemanticKittiLearning},
                                    {"mulran", LabelPreset::kMulRan},
                                    {"mcd", LabelPreset::kMcd},
+                                   {"nuscenes", LabelPreset::kNuScenes},
                                    {"custom", LabelPreset::kCustom}}));
+  f.push_back(choice<LabelFormat>("labels.format",
+                                  "label files: 4 bytes (uint32) or 1 byte (uint8) a point; auto tells them by size",
+                                  [](Config& c) -> LabelFormat& { return c.labels.format; },
+                                  {{"auto", LabelFormat::kAuto},
+                                   {"uint32", LabelFormat::kUint32},
+                                   {"uint8", LabelFormat::kUint8}}));
   f.push_back(customMap());
   f.push_back(extraClasses());
   f.push_back(choice<LabelSource>("labeller.source",

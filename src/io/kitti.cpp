@@ -29,8 +29,25 @@ uint64_t fileSize(std::FILE* file, const std::string& path) {
   return static_cast<uint64_t>(size);
 }
 
-/// Reads a whole file of fixed-size records of 4-byte words with one fread (the scans are ~2 MB; speed matters when
-/// streaming a sequence). @p record_words words make one record; @p what describes the record for the size error.
+/// Reads the rest of an open file of @p bytes bytes as records of type T with one fread (the scans are ~2 MB;
+/// speed matters when streaming a sequence).
+template <typename T>
+std::vector<T> readRecords(std::FILE* file, const std::string& path, uint64_t bytes) {
+  std::vector<T> records;
+  try {
+    records.resize(bytes / sizeof(T));
+  } catch (const std::bad_alloc&) {
+    throw Error(path + ": " + std::to_string(bytes) + " bytes do not fit in memory");
+  }
+  if (!records.empty() && std::fread(records.data(), sizeof(T), records.size(), file) != records.size()) {
+    throw Error("cannot read " + path + ": " + (std::ferror(file) ? std::strerror(errno) : "file shrank"));
+  }
+  if constexpr (sizeof(T) == 4) swapWordsIfBigEndian(records);
+  return records;
+}
+
+/// A whole file of fixed-size records of 4-byte words: @p record_words words make one record; @p what describes
+/// the record for the size error.
 template <typename T>
 std::vector<T> readWordFile(const std::string& path, size_t record_words, const char* what) {
   FilePtr file = detail::openForReading(path);
@@ -40,17 +57,29 @@ std::vector<T> readWordFile(const std::string& path, size_t record_words, const 
     throw Error(path + ": size " + std::to_string(bytes) + " bytes is not a multiple of " +
                 std::to_string(record_bytes) + " (" + what + ")");
   }
-  std::vector<T> words;
-  try {
-    words.resize(bytes / sizeof(T));
-  } catch (const std::bad_alloc&) {
-    throw Error(path + ": " + std::to_string(bytes) + " bytes do not fit in memory");
+  return readRecords<T>(file.get(), path, bytes);
+}
+
+/// The labels of a scan of @p points points in @p format (auto: by the file size). @p scan names the scan in the
+/// size error ("" when the caller gave only a count). The size is checked before anything is allocated.
+std::vector<uint32_t> readLabelsOf(const std::string& path, uint64_t points, LabelFormat format,
+                                   const std::string& scan) {
+  FilePtr file = detail::openForReading(path);
+  const uint64_t bytes = fileSize(file.get(), path);
+  const bool is32 = bytes % 4 == 0 && bytes / 4 == points, is8 = bytes == points;  // no overflow of 4·points
+  const bool bytewise = format == LabelFormat::kUint8 || (format == LabelFormat::kAuto && !is32);
+  if (bytewise ? is8 : is32) {
+    if (!bytewise) return readRecords<uint32_t>(file.get(), path, bytes);
+    const std::vector<uint8_t> ids = readRecords<uint8_t>(file.get(), path, bytes);
+    return std::vector<uint32_t>(ids.begin(), ids.end());
   }
-  if (!words.empty() && std::fread(words.data(), sizeof(T), words.size(), file.get()) != words.size()) {
-    throw Error("cannot read " + path + ": " + (std::ferror(file.get()) ? std::strerror(errno) : "file shrank"));
-  }
-  swapWordsIfBigEndian(words);
-  return words;
+  const std::string as32 = std::to_string(4 * points) + " (uint32 labels, 4 bytes a point)";
+  const std::string as8 = std::to_string(points) + " (uint8 labels, 1 byte a point)";
+  const std::string want = format == LabelFormat::kUint32  ? "not " + as32
+                           : format == LabelFormat::kUint8 ? "not " + as8
+                                                           : "neither " + as32 + " nor " + as8;
+  throw Error("point/label count mismatch: " + (scan.empty() ? std::string("the scan") : scan) + " has " +
+              std::to_string(points) + " points but " + path + " has " + std::to_string(bytes) + " bytes, " + want);
 }
 
 /// Parses 12 numbers (row-major 3×4 [R|t]) into a 4×4 matrix; @p where prefixes the error ("FILE:LINE").
@@ -86,14 +115,14 @@ std::vector<uint32_t> readLabelFile(const std::string& path) {
   return readWordFile<uint32_t>(path, 1, "uint32 labels");
 }
 
-LabeledCloud readLabeledScan(const std::string& bin_path, const std::string& label_path) {
+std::vector<uint32_t> readLabelFile(const std::string& path, size_t point_count, LabelFormat format) {
+  return readLabelsOf(path, point_count, format, "");
+}
+
+LabeledCloud readLabeledScan(const std::string& bin_path, const std::string& label_path, LabelFormat format) {
   LabeledCloud cloud;
   cloud.points = readKittiBin(bin_path);
-  cloud.labels = readLabelFile(label_path);
-  if (cloud.points.size() != cloud.labels.size()) {
-    throw Error("point/label count mismatch: " + bin_path + " has " + std::to_string(cloud.points.size()) +
-                " points but " + label_path + " has " + std::to_string(cloud.labels.size()) + " labels");
-  }
+  cloud.labels = readLabelsOf(label_path, cloud.points.size(), format, bin_path);
   return cloud;
 }
 

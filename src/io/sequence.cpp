@@ -32,7 +32,7 @@ std::vector<fs::path> listScans(const fs::path& velodyne) {
 
 }  // namespace
 
-SequenceDir::SequenceDir(const std::string& dir, const SequenceLabels& labels) : dir_(dir) {
+SequenceDir::SequenceDir(const std::string& dir, const SequenceLabels& labels) : dir_(dir), format_(labels.format) {
   const fs::path root(dir);
   const std::vector<fs::path> scans = listScans(root / "velodyne");
   const fs::path label_dir = labels.dir.empty() ? root / "labels" : fs::path(labels.dir);
@@ -65,7 +65,7 @@ LabeledCloud SequenceDir::load(size_t i) const {
     cloud.points = readKittiBin(binPath(i));
     return cloud;
   }
-  return readLabeledScan(binPath(i), labelPath(i));
+  return readLabeledScan(binPath(i), labelPath(i), format_);
 }
 
 }  // namespace sgtllc::io

@@ -18,6 +18,7 @@ constexpr double kRigidTolerance = 1e-3;
 /// Keys a map depends on (docs/map-format.md, "Configuration"): whole sections (the labeller too: geometric and
 /// network labels give other nodes), or single retrieval keys.
 bool storedField(std::string_view key) {
+  if (key == "labels.format") return false;  // how label files hold the ids, not which ids: the nodes are the same
   for (std::string_view section : {"labels.", "labeller.", "cluster.", "graph.", "descriptor."}) {
     if (key.substr(0, section.size()) == section) return true;
   }

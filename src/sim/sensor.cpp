@@ -22,30 +22,54 @@ std::vector<double> hdl64Elevations() {
   return e;
 }
 
+/// The 32 HDL-32E elevations (deg): +10.67 … −30.67 in equal steps of 41.34° / 31 ≈ 1.33°.
+std::vector<double> hdl32Elevations() {
+  std::vector<double> e;
+  for (int k = 0; k < 32; ++k) e.push_back(10.67 - k * (41.34 / 31.0));
+  return e;
+}
+
 }  // namespace
 
 SensorKind parseSensorKind(const std::string& name) {
   if (name == "hdl64") return SensorKind::kHdl64;
+  if (name == "hdl32") return SensorKind::kHdl32;
   if (name == "mid70") return SensorKind::kMid70;
-  throw Error("unknown sensor '" + name + "' (expected hdl64 or mid70)");
+  throw Error("unknown sensor '" + name + "' (expected hdl64, hdl32 or mid70)");
 }
 
-const char* sensorName(SensorKind kind) { return kind == SensorKind::kHdl64 ? "hdl64" : "mid70"; }
+const char* sensorName(SensorKind kind) {
+  switch (kind) {
+    case SensorKind::kHdl64: return "hdl64";
+    case SensorKind::kHdl32: return "hdl32";
+    case SensorKind::kMid70: break;
+  }
+  return "mid70";
+}
 
 SensorConfig SensorConfig::preset(SensorKind kind) {
   SensorConfig c;
   c.kind = kind;
   if (kind == SensorKind::kMid70) c.max_range = 90.0;
+  if (kind == SensorKind::kHdl32) {
+    c.rows = 32;
+    c.columns = 1085;
+    c.max_range = 70.0;
+  }
   return c;
 }
 
 SensorModel::SensorModel(const SensorConfig& config) : config_(config) {
-  if (config.kind == SensorKind::kHdl64) {
-    if (config.rows < 1 || config.rows > 64) throw Error("sensor rows must be 1..64, not " + std::to_string(config.rows));
+  if (config.kind != SensorKind::kMid70) {
+    const std::vector<double> all = config.kind == SensorKind::kHdl64 ? hdl64Elevations() : hdl32Elevations();
+    const int beams = static_cast<int>(all.size());
+    if (config.rows < 1 || config.rows > beams) {
+      throw Error("sensor rows must be 1.." + std::to_string(beams) + ", not " + std::to_string(config.rows));
+    }
     if (config.columns < 8) throw Error("sensor columns must be at least 8, not " + std::to_string(config.columns));
-    const std::vector<double> all = hdl64Elevations();
     for (int r = 0; r < config.rows; ++r) {
-      elevations_.push_back(all[config.rows == 1 ? 0 : static_cast<size_t>(std::lround(r * 63.0 / (config.rows - 1)))]);
+      const long at = config.rows == 1 ? 0 : std::lround(r * (beams - 1.0) / (config.rows - 1));
+      elevations_.push_back(all[static_cast<size_t>(at)]);
     }
     rows_ = config.rows;
     columns_ = config.columns;
@@ -60,7 +84,7 @@ SensorModel::SensorModel(const SensorConfig& config) : config_(config) {
 
 void SensorModel::directions(int64_t scan, uint64_t seed, std::vector<Eigen::Vector3f>& out) const {
   out.resize(static_cast<size_t>(raysPerScan()));
-  if (config_.kind == SensorKind::kHdl64) {
+  if (wraps()) {
     const double step = 2.0 * M_PI / columns_;
     // Each turn starts at its own azimuth, as a free-running spinning sensor does.
     const double phase = step * hashUniform(hashWords(seed, static_cast<uint64_t>(Stream::kScan), scan, 1));

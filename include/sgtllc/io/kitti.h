@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "sgtllc/config.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -24,9 +25,19 @@ std::vector<Eigen::Vector3f> readKittiBin(const std::string& path, std::vector<f
 /// The size must be a multiple of 4 bytes; an empty file gives no labels.
 std::vector<uint32_t> readLabelFile(const std::string& path);
 
-/// Reads a scan and its labels and checks that the counts agree; the error names both files and both counts
-/// (`point/label count mismatch: A.bin has 3 points but A.label has 2 labels`).
-LabeledCloud readLabeledScan(const std::string& bin_path, const std::string& label_path);
+/// Reads the label file of a scan of @p point_count points. LabelFormat::kUint32 needs 4·N bytes (as above),
+/// kUint8 N bytes (one id 0..255 a point: nuScenes-lidarseg and its KITTI-layout conversions), kAuto takes
+/// whichever of the two the file size is (they differ for N > 0). Any other size throws, naming N, the file, its
+/// size and the size(s) that fit: `point/label count mismatch: the scan has 5 points but A.label has 17 bytes,
+/// neither 20 (uint32 labels, 4 bytes a point) nor 5 (uint8 labels, 1 byte a point)`.
+std::vector<uint32_t> readLabelFile(const std::string& path, size_t point_count, LabelFormat format = LabelFormat::kAuto);
+
+/// Reads a scan and its labels (in @p format; see readLabelFile) and checks that there is one label a point; the
+/// error names both files, the point count and the label file's size (`point/label count mismatch: A.bin has 3
+/// points but A.label has 8 bytes, neither 12 (uint32 labels, 4 bytes a point) nor 3 (uint8 labels, 1 byte a
+/// point)`).
+LabeledCloud readLabeledScan(const std::string& bin_path, const std::string& label_path,
+                             LabelFormat format = LabelFormat::kAuto);
 
 /// Label file that belongs to a scan: `DIR/../labels/NAME.label` for a scan `DIR/NAME.bin` (the SemanticKITTI
 /// layout `seq/velodyne/NAME.bin` + `seq/labels/NAME.label`) if that file exists, else `DIR/NAME.label` next to the

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "sgtllc/config.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io {
@@ -13,6 +14,7 @@ namespace sgtllc::io {
 struct SequenceLabels {
   bool read = true;     ///< false: scans only (labeller.source geometric); load() gives no labels
   std::string dir;      ///< folder of NAME.label files (a network's predictions/); "" = `DIR/labels`
+  LabelFormat format = LabelFormat::kAuto;  ///< uint32 or one byte a point (LabelConfig::format; readLabelFile)
 };
 
 /// The scans of one sequence and their label files. Only file names are collected at construction; scans are read
@@ -45,6 +47,7 @@ class SequenceDir {
   std::string dir_;
   std::vector<std::string> bins_;
   std::vector<std::string> labels_;
+  LabelFormat format_ = LabelFormat::kAuto;
 };
 
 }  // namespace sgtllc::io

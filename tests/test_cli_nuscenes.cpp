@@ -1,0 +1,56 @@
+// The 32-beam sensor on the command line: `pair` on two consecutive real nuScenes-lidarseg keyframes (one byte of
+// label per point, data/nuscenes) with configs/nuscenes.yaml, and a label file of the wrong size.
+#include <regex>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "test_cli_support.h"
+
+namespace sgtllc::test {
+namespace {
+
+const std::string kData = SGTLLC_DATA_DIR;
+const std::string kScene = kData + "/nuscenes/0001/";
+const std::string kConfig = kData + "/../configs/nuscenes.yaml";
+
+/// Nodes printed on the `query` or `match` line of `sgtllc pair`, or −1.
+int nodesOn(const std::string& out, const std::string& which, const std::string& points) {
+  const std::regex line(which + " +\\S+ +\\(" + points + " points, ([0-9]+) nodes\\)");
+  std::smatch m;
+  return std::regex_search(out, m, line) ? std::stoi(m[1]) : -1;
+}
+
+TEST(CliNuScenes, PairOfConsecutiveKeyframesReportsNodes) {
+  const CliRun r = run("pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin --config " + kConfig);
+  ASSERT_EQ(r.status, 0) << r.out;
+  // 34,752 and 34,720 points (file sizes / 16); the nodes are of building, fence, vegetation and terrain only.
+  EXPECT_GT(nodesOn(r.out, "query", "34752"), 0) << r.out;
+  EXPECT_GT(nodesOn(r.out, "match", "34720"), 0) << r.out;
+  EXPECT_EQ(r.out.find("ignored"), std::string::npos) << r.out;  // every id 0..39 is in the preset's label space
+}
+
+TEST(CliNuScenes, WithoutThePresetTheIdsAreReadAsSemanticKitti) {
+  // The one-byte file is still read (labels.format auto), but as SemanticKITTI ids: most are not in that label set.
+  const CliRun r = run("pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("ignored 21721 points whose label id is not in the configured label set"), std::string::npos)
+      << r.out;
+}
+
+TEST(CliNuScenes, LabelFileOfAnotherScanIsAnErrorNamingBothSizes) {
+  const std::string wrong = kData + "/nuscenes/0006/labels/000000.label";  // 34,720 bytes
+  CliRun r = run("pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin --labels-query " + wrong);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("000001.bin has 34752 points but " + wrong +
+                       " has 34720 bytes, neither 139008 (uint32 labels, 4 bytes a point) nor 34752 (uint8 labels"),
+            std::string::npos)
+      << r.out;
+  r = run("pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin --labels-query " + wrong +
+          " --config " + kConfig);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("has 34720 bytes, not 34752 (uint8 labels, 1 byte a point)"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace sgtllc::test
