@@ -108,7 +108,7 @@ Json countsJson(const eval::NodeRepeatability& r, const LabelConfig& labels) {
 
 void runRepeatability(const RepeatabilityCliOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
-  const io::SequenceDir seq(o.sequence, io::SequenceLabels{true, o.labels_dir});
+  const io::SequenceDir seq(o.sequence, io::SequenceLabels{true, o.labels_dir, config.labels.format});
   std::string poses_from;
   const std::vector<Eigen::Isometry3d> poses = lidarPosesOf(o, &poses_from);
   const auto pairs = pairIndices(o, seq);

@@ -66,7 +66,8 @@ double msSince(std::chrono::steady_clock::time_point start) {
 }
 
 /// A scan with the labels of its file, as read.
-LabeledCloud loadLabelledScan(const std::string& path, const std::string& label_path, const std::string& label_field) {
+LabeledCloud loadLabelledScan(const std::string& path, const std::string& label_path, const std::string& label_field,
+                              LabelFormat format) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".pcd") {
     if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");
@@ -75,8 +76,7 @@ LabeledCloud loadLabelledScan(const std::string& path, const std::string& label_
   if (ext != ".bin") {
     throw Error(path + ": unknown input format '" + ext + "' (expected a KITTI .bin, a .pcd or a .txt node file)");
   }
-  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path,
-                             config.labels.format);
+  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path, format);
 }
 
 LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field,
@@ -87,7 +87,7 @@ LabeledCloud loadScan(const std::string& path, const std::string& label_path, co
     if (!label_path.empty()) throw Error(path + ": --labeller geometric reads no label file; drop the label option");
     return labeller.apply({readScanPoints(path), {}});
   }
-  return labeller.apply(loadLabelledScan(path, label_path, label_field));
+  return labeller.apply(loadLabelledScan(path, label_path, label_field, config.labels.format));
 }
 
 }  // namespace
