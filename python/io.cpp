@@ -56,6 +56,9 @@ py::array_t<double> readPoses(const std::string& path, const std::optional<std::
   requireFile(path);
   if (calib) requireFile(*calib);
   const io::PoseFrame frame = io::parsePoseFrame(pose_frame);
+  if (calib && frame == io::PoseFrame::kLidar) {
+    throw Error(path + ": calib converts cam0 poses, pose_frame='lidar' says they are LiDAR poses: give one of them");
+  }
   io::FramedTrajectory read;
   {
     py::gil_scoped_release release;

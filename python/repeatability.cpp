@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cmath>
 
 #include "arrays.h"
 #include "bindings.h"
@@ -23,7 +24,7 @@ std::vector<int8_t> classesFromArray(const py::handle& array, const char* name) 
   const std::vector<double> v = doublesFromArray(array, name);
   std::vector<int8_t> out(v.size());
   for (size_t i = 0; i < v.size(); ++i) {
-    if (v[i] != static_cast<int>(v[i]) || v[i] < -1 || v[i] >= kMaxClasses) {
+    if (!(v[i] >= -1 && v[i] < kMaxClasses) || v[i] != std::floor(v[i])) {
       throw py::value_error(std::string(name) + ": expected stable classes 0.." + std::to_string(kMaxClasses - 1) +
                             " or -1 (dropped), got " + std::to_string(v[i]) + " at index " + std::to_string(i));
     }

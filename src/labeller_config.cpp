@@ -62,15 +62,17 @@ void validateLabellerConfig(const LabellerConfig& l, const LabelConfig& labels) 
   }
 }
 
-LabelConfig effectiveLabelConfig(const Config& config) {
-  switch (config.labeller.source) {
+LabelConfig effectiveLabelConfig(const LabelConfig& labels, const LabellerConfig& labeller) {
+  switch (labeller.source) {
     case LabelSource::kGeometric:
       return LabelConfig{};
     case LabelSource::kHybrid:
-      return hybridSplits(config.labels).any() ? LabelConfig{} : config.labels;
+      return hybridSplits(labels).any() ? LabelConfig{} : labels;
     default:
-      return config.labels;
+      return labels;
   }
 }
+
+LabelConfig effectiveLabelConfig(const Config& config) { return effectiveLabelConfig(config.labels, config.labeller); }
 
 }  // namespace sgtllc

@@ -30,6 +30,21 @@ TEST(CliNuScenes, PairOfConsecutiveKeyframesReportsNodes) {
   EXPECT_EQ(r.out.find("ignored"), std::string::npos) << r.out;  // every id 0..39 is in the preset's label space
 }
 
+TEST(CliNuScenes, HybridSplitsPolesAndTrunksOffTheLabels) {
+  // nuScenes folds poles into static.manmade: with its labels alone the two keyframes (2.1 m apart) have 3 nodes
+  // each and no association; the config's hybrid source splits off the poles and trunks and the pair verifies.
+  const std::string pair = "pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin --config " + kConfig;
+  const CliRun hybrid = run(pair);
+  ASSERT_EQ(hybrid.status, 0) << hybrid.out;
+  EXPECT_EQ(nodesOn(hybrid.out, "query", "34752"), 7) << hybrid.out;
+  EXPECT_EQ(nodesOn(hybrid.out, "match", "34720"), 7) << hybrid.out;
+  EXPECT_NE(hybrid.out.find("loop: YES"), std::string::npos) << hybrid.out;
+  const CliRun file = run(pair + " --labeller file");
+  ASSERT_EQ(file.status, 0) << file.out;
+  EXPECT_EQ(nodesOn(file.out, "query", "34752"), 3) << file.out;
+  EXPECT_NE(file.out.find("loop: no"), std::string::npos) << file.out;
+}
+
 TEST(CliNuScenes, WithoutThePresetTheIdsAreReadAsSemanticKitti) {
   // The one-byte file is still read (labels.format auto), but as SemanticKITTI ids: most are not in that label set.
   const CliRun r = run("pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin");

@@ -69,10 +69,12 @@ TEST(CloudLabeller, HybridRecoversPolesAndTrunksOfARealScan) {
   ASSERT_EQ(out.labels.size(), scan.labels.size());
   EXPECT_FALSE(LabelMap().isKnown(out.labels.back()));
   const LabelMap truth;
+  const LabelConfig folded_labels = foldedLabels();
   size_t split = 0, split_right = 0, truth_thin = 0;
   for (size_t i = 0; i + 1 < scan.labels.size(); ++i) {
     const int t = truth.classOf(scan.labels[i]), o = truth.classOf(out.labels[i]);
-    const int f = foldedLabels().custom_map.count(scan.labels[i] & 0xFFFF) ? foldedLabels().custom_map.at(scan.labels[i] & 0xFFFF) : -1;
+    const auto it = folded_labels.custom_map.find(scan.labels[i] & 0xFFFF);
+    const int f = it != folded_labels.custom_map.end() ? it->second : -1;
     if (t == kTrunk || t == kPole) ++truth_thin;
     if (o == kPole || o == kTrunk) {
       // Only building points become pole and only vegetation points trunk.

@@ -102,6 +102,7 @@ TEST(NuScenesLabels, BundledConfigAndYamlKeys) {
   const sgtllc::Config c = sgtllc::io::loadConfig(std::string(SGTLLC_DATA_DIR) + "/../configs/nuscenes.yaml");
   EXPECT_EQ(c.labels.preset, sgtllc::LabelPreset::kNuScenes);
   EXPECT_EQ(c.labels.format, LabelFormat::kUint8);
+  EXPECT_EQ(c.labeller.source, sgtllc::LabelSource::kHybrid);  // nuScenes has no pole or trunk class
   EXPECT_EQ(sgtllc::io::parseConfig("labels:\n  format: uint32\n").labels.format, LabelFormat::kUint32);
   EXPECT_EQ(sgtllc::Config().labels.format, LabelFormat::kAuto);
   // Printed and read back.

@@ -1,5 +1,6 @@
 // `sgtllc repeatability SEQ_DIR`: do a place's nodes come back in another scan of it, with the folder's labels and
 // with the geometric labeller, and how far do the geometric labels agree with the folder's (docs/labeller.md §5).
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -61,7 +62,7 @@ std::vector<Eigen::Isometry3d> lidarPosesOf(const RepeatabilityCliOptions& o, st
 long frameNumber(const std::string& name, const std::string& dir) {
   char* end = nullptr;
   const long n = std::strtol(name.c_str(), &end, 10);
-  if (name.empty() || *end != '\0' || n < 0) {
+  if (name.empty() || !std::isdigit(static_cast<unsigned char>(name[0])) || *end != '\0') {
     throw Error(dir + ": scan " + io::quoteContent(name) + " is not named by its frame number (the line of poses.txt)");
   }
   return n;
@@ -134,11 +135,12 @@ void runRepeatability(const RepeatabilityCliOptions& o) {
     auto it = scans.find(i);
     if (it != scans.end()) return it->second;
     const LabeledCloud cloud = seq.load(i);
+    const label::Labelling shapes = labeller.classify(cloud.points);  // once, for every way and the agreement
     std::vector<std::vector<Node>> nodes;
     for (const Way& w : ways) {
-      nodes.push_back(w.extractor.extract(w.labeller.changesLabels() ? w.labeller.apply(cloud) : cloud).nodes);
+      nodes.push_back(w.extractor.extract(w.labeller.changesLabels() ? w.labeller.apply(cloud, shapes) : cloud).nodes);
     }
-    agreement.add(labeller.classify(cloud.points).classes, eval::stableClasses(cloud.labels, reference_map), merge);
+    agreement.add(shapes.classes, eval::stableClasses(cloud.labels, reference_map), merge);
     return scans.emplace(i, std::move(nodes)).first->second;
   };
 
@@ -199,7 +201,8 @@ void runRepeatability(const RepeatabilityCliOptions& o) {
             << " m of both sensors\n";
   for (size_t w = 0; w < ways.size(); ++w) printCounts(ways[w].name, all[w], ways[w].labeller.nodeLabels());
   for (const PairResult& r : results) {
-    std::printf("  %s -> %s  %6.2f m", io::escapeContent(r.query).c_str(), io::escapeContent(r.match).c_str(),
+    std::printf("  %s -> %s  %6.2f m", io::escapeContent(r.query, io::kNameBytes).c_str(),
+                io::escapeContent(r.match, io::kNameBytes).c_str(),
                 r.distance);
     for (size_t w = 0; w < ways.size(); ++w) {
       std::printf("   %s %.3f (%d/%d)", ways[w].key, r.ways[w].share(), r.ways[w].totalRepeated(),

@@ -111,7 +111,7 @@ void printSummary(const sim::Simulator& s, const sim::SequenceStats& st, const s
             << fixed(st.path_length, 0) << " m driven)\n";
 }
 
-/// Said before writing: the route of a short sequence cannot hold every planned revisit (issue 12 item 4).
+/// Said before writing: the route of a short sequence cannot hold every planned revisit.
 void warnIfRevisitsDoNotFit(const sim::Simulator& simulator) {
   const sim::SimConfig& c = simulator.config();
   const int planned = c.plannedRevisits(), driven = sim::drivenRevisits(simulator);

@@ -278,24 +278,23 @@ struct VerificationConfig {
   bool guided_matching = true;
   /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
-  /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: issue 13 item 3; tuned on the urban11
-  /// and sub7 sequences, see BENCHMARKS.md ("Top-1 choice")]
+  /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: tuned on the urban11 and sub7
+  /// sequences, see BENCHMARKS.md ("Top-1 choice")]
   double select_margin = 0.15;
   /// A chosen candidate whose estimated offset ‖t(T_match_query)‖ is at least this is reported as lateral
   /// (FrameResult::lateral): a neighbour of the revisit along the old pass, not the revisit itself. It is still a
   /// loop (its pose is a valid constraint), but the top-1 protocol does not claim it as a revisit (m) (0, 1000].
-  /// [deviation: issue 13 item 3; 3 m is the protocols' positive distance]
+  /// [deviation: 3 m is the protocols' positive distance; BENCHMARKS.md, "Top-1 choice"]
   double lateral_distance = 3.0;
   /// Neighbour check of the top-1 (detector.h, Candidate::retrieved): when the chosen candidate is a loop, the
   /// database frames within ±neighbour_frames of it that retrieval did not return are verified too, and the top-1
   /// is chosen again among all (select_margin). Consecutive frames of the old pass see nearly the same scene, so
   /// the one nearest the query often scores within the margin yet ranks outside the K retrieved. 0 = off, as the
-  /// paper [0, 50]. [deviation: issue 13 item 3; tuned on the urban11 and sub7 sequences, see BENCHMARKS.md
-  /// ("Top-1 choice")]
+  /// paper [0, 50]. [deviation: tuned on the urban11 and sub7 sequences, see BENCHMARKS.md ("Top-1 choice")]
   int neighbour_frames = 2;
   /// Offset decay of score_t (verification.h, offsetWeight): a verified candidate whose estimated offset
   /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score_t is scaled down linearly to 0
-  /// at offset_decay_end (m) [0, 1000]. [deviation: issue 13 (pairwise EP). The highest-scoring wrong matches were
+  /// at offset_decay_end (m) [0, 1000]. [deviation, for the pairwise EP. The highest-scoring wrong matches were
   /// pairs just over 20 m apart whose pose was right (estimated 20.0 m for 20.1 m): two passes along the same
   /// street share many objects, so the overlap score cannot tell them from a revisit, but their pose can. Tuned on
   /// the urban11 and sub7 sequences: pairwise EP 0.939 → 0.994 and 0.980 → 0.996, see BENCHMARKS.md ("Offset
@@ -354,6 +353,9 @@ void validateLabellerConfig(const LabellerConfig& labeller, const LabelConfig& l
 /// The label space of the node extraction: @p config.labels, or with labeller.source geometric the
 /// SemanticKITTI raw ids the geometric labeller writes (LabelConfig{}).
 LabelConfig effectiveLabelConfig(const Config& config);
+/// The same for a label set and labeller settings: with labeller.source hybrid, the SemanticKITTI ids too when it
+/// splits anything off (hybridSplits in labels.h), else @p labels.
+LabelConfig effectiveLabelConfig(const LabelConfig& labels, const LabellerConfig& labeller);
 
 /// Range checks of the registration settings as ConfigError (registration_config.cpp).
 void validateRegistrationConfig(const RegistrationConfig& registration);

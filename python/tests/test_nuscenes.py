@@ -25,4 +25,5 @@ def test_nuscenes_preset_in_the_config():
     config = sgtllc.Config.from_yaml(str(SOURCE / "configs" / "nuscenes.yaml"))
     assert config.labels.preset == sgtllc.LabelPreset.NUSCENES
     assert config.labels.format == sgtllc.LabelFormat.UINT8
+    assert config.labeller.source == sgtllc.LabelSource.HYBRID
     assert sgtllc.Config().labels.format == sgtllc.LabelFormat.AUTO

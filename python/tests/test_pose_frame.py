@@ -43,6 +43,8 @@ def test_cam0_file_without_a_calib_names_calib():
         sgtllc.read_poses(str(CAM0), pose_frame="cam0")
     # Said explicitly: taken as written.
     np.testing.assert_array_equal(sgtllc.read_poses(str(CAM0), pose_frame="lidar"), raw_kitti(CAM0))
+    with pytest.raises(sgtllc.Error, match=r"calib converts cam0 poses, pose_frame='lidar' says they are LiDAR"):
+        sgtllc.read_poses(str(CAM0), str(CALIB), pose_frame="lidar")
 
 
 def test_lidar_file_is_detected_and_said(tmp_path):

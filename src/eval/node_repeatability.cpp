@@ -80,6 +80,9 @@ double NodeRepeatability::share(int c) const {
 
 NodeRepeatability nodeRepeatability(const std::vector<Node>& a, const std::vector<Node>& b,
                                     const Eigen::Isometry3d& T_b_a, const RepeatabilityOptions& options) {
+  for (const std::vector<Node>* nodes : {&a, &b}) {
+    for (const Node& n : *nodes) classIndex(n);
+  }
   NodeRepeatability r;
   // a's nodes in b's frame (b's sensor at the origin, a's at T_b_a's translation), then b's in a's frame.
   countSide(moved(a, T_b_a), a, T_b_a.translation(), b, options, r);

@@ -62,7 +62,7 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   }
   // The decoded map takes about 1.1 times its file (docs/map-format.md, "Reading"): refuse what cannot fit
   // rather than fail half way with an allocation error.
-  if (file_bytes > loadable_bytes) {
+  if (file_bytes + file_bytes / 10 > loadable_bytes) {
     fail(MapProblem::kTooLarge, "a map of " + sizes + " (" + io::detail::gibText(file_bytes) +
                                     ") is more than this machine can load (" + io::detail::gibText(loadable_bytes) + " of memory)");
   }

@@ -13,8 +13,7 @@ constexpr size_t kNodeBytes = 3 * sizeof(double) + sizeof(int32_t);
 void readConfig(Reader& r, Parts& parts) {
   const uint32_t n = r.get<uint32_t>();
   if (n > r.remaining() / 8) r.fail("a count of " + std::to_string(n) + " fields does not fit in the section");
-  ConfigFields fields;
-  fields.reserve(n);
+  ConfigFields fields;  // grown as fields parse: a damaged count must not allocate before the checksum is seen
   for (uint32_t i = 0; i < n; ++i) {
     std::string key = r.text();
     fields.emplace_back(std::move(key), r.text());
@@ -23,8 +22,9 @@ void readConfig(Reader& r, Parts& parts) {
 }
 
 void readNames(Reader& r, Parts& parts) {
-  std::vector<std::string> names(r.count(sizeof(uint32_t)));
-  for (std::string& name : names) name = r.text();
+  const size_t n = r.count(sizeof(uint32_t));
+  std::vector<std::string> names;  // grown as names parse (32 bytes a string against 4 bytes of file)
+  for (size_t i = 0; i < n; ++i) names.push_back(r.text());
   parts.names = std::move(names);
 }
 
@@ -39,13 +39,14 @@ void readPoses(Reader& r, Parts& parts) {
 }
 
 void readNodes(Reader& r, Parts& parts) {
-  std::vector<std::vector<Node>> frames(r.count(sizeof(uint32_t)));
-  std::vector<uint32_t> counts(frames.size());
+  // The counts first (4 bytes each, as in the file), then the frames once the counts match the bytes left.
+  std::vector<uint32_t> counts(r.count(sizeof(uint32_t)));
   uint64_t total = 0;
   for (uint32_t& c : counts) total += c = r.get<uint32_t>();
   if (total != r.remaining() / kNodeBytes || r.remaining() % kNodeBytes != 0) {
     r.fail(std::to_string(total) + " nodes declared, " + std::to_string(r.remaining()) + " bytes of them found");
   }
+  std::vector<std::vector<Node>> frames(counts.size());
   for (size_t f = 0; f < frames.size(); ++f) {
     frames[f].resize(counts[f]);
     for (Node& n : frames[f]) {

@@ -32,6 +32,9 @@ class CloudLabeller {
   /// source file; SemanticKITTI ids for geometric (its labels are not read) and hybrid. Throws sgtllc::Error if
   /// hybrid and the labels and points differ in length.
   LabeledCloud apply(LabeledCloud cloud) const;
+  /// apply() with the geometric labeller's @p shapes of the cloud's points already at hand (the labeller is then
+  /// not run again). Throws sgtllc::Error if @p shapes is of another length.
+  LabeledCloud apply(LabeledCloud cloud, const Labelling& shapes) const;
 
   /// The label space of apply()'s output (effectiveLabelConfig).
   const LabelConfig& nodeLabels() const { return node_labels_; }
