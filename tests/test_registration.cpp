@@ -1,5 +1,7 @@
 // Fine registration (issue 13 item 4): point-to-plane ICP against known poses, the real KITTI revisit against the
 // ICP-refined reference, the fallbacks, the information matrix, the compact cloud and the online option.
+#include <utility>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -41,6 +43,27 @@ class Registration : public ::testing::Test {
   static LabeledCloud *s52, *s4501;
 };
 LabeledCloud *Registration::s52, *Registration::s4501;
+
+TEST_F(Registration, AGivenUpCloudGivesTheSamePointsAndIsLeftEmpty) {
+  // The in-place filter (pair's big scans) must keep exactly the points, in the order, of the copying one.
+  const LabelMap labels{LabelConfig{}};
+  const RegistrationConfig config;
+  for (const LabeledCloud* scan : {s52, s4501}) {
+    const std::vector<Eigen::Vector3f> copied = queryPoints(*scan, labels, config);
+    const std::vector<Eigen::Vector3f> fine = matchPoints(*scan, labels, config);
+    ASSERT_GT(copied.size(), 1000u);
+    LabeledCloud given = *scan;
+    EXPECT_EQ(queryPoints(std::move(given), labels, config), copied);
+    EXPECT_TRUE(given.points.empty());
+    EXPECT_TRUE(given.labels.empty());
+    LabeledCloud given_match = *scan;
+    EXPECT_EQ(matchPoints(std::move(given_match), labels, config), fine);
+    EXPECT_TRUE(given_match.points.empty());
+  }
+  LabeledCloud mismatched = *s52;
+  mismatched.labels.pop_back();
+  EXPECT_THROW(queryPoints(std::move(mismatched), labels, config), Error);
+}
 
 TEST_F(Registration, RecoversAKnownPoseFromAPerturbedSeed) {
   // The query is the match's own points moved by T⁻¹, so T_match_query = T exactly; the seed is 10 cm and 0.5°

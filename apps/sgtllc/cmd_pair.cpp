@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "commands.h"
 #include "common.h"
@@ -202,8 +204,9 @@ void runPair(const PairOptions& o) {
   const auto refine_start = std::chrono::steady_clock::now();
   const LabelMap labels(effectiveLabelConfig(config));
   if (!q.from_node_file && !mt.from_node_file) {  // node files carry no points: the SVD pose stands
-    refinePair(&r, queryPoints(q.cloud, labels, config.registration),
-               matchPoints(mt.cloud, labels, config.registration), config);
+    // Each scan is given up to its registration points, one after the other: the peak holds one big scan.
+    std::vector<Eigen::Vector3f> query_points = queryPoints(std::move(q.cloud), labels, config.registration);
+    refinePair(&r, query_points, matchPoints(std::move(mt.cloud), labels, config.registration), config);
   }
   if (r.refinement) {
     r.timing.refinement_ms =

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <utility>
 
 #include "sgtllc/graph.h"
 #include "sgtllc/io/config_yaml.h"
@@ -106,7 +107,7 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
     f.load_ms = msSince(start);
     return f;
   }
-  const LabeledCloud cloud = loadScan(path, label_path, label_field, config);
+  LabeledCloud cloud = loadScan(path, label_path, label_field, config);
   f.points = cloud.points.size();
   f.load_ms = msSince(start);
   start = std::chrono::steady_clock::now();
@@ -114,7 +115,7 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
   f.extraction_ms = msSince(start);
   f.nodes = std::move(extracted.nodes);
   f.stats = extracted.stats;
-  if (config.registration.pair) f.cloud = cloud;
+  if (config.registration.pair) f.cloud = std::move(cloud);  // kept for ICP, moved: no second copy of the scan
   return f;
 }
 
