@@ -21,6 +21,7 @@ struct LocalizeOptions {
   std::string labeller, labels_dir;  ///< --labeller, --labels-dir (as `sgtllc run`)
   int threads = 0;
   bool json = false;
+  bool quiet = false;  ///< --quiet: the summary only, no line per frame
   bool force = false;
   bool track = false;  ///< --track: the frames are one stream (map::RelocalizationTracker)
 };
@@ -110,7 +111,7 @@ void localizeCommand(const LocalizeOptions& o) {
   const auto on_hit = [&](size_t index, const Hit& h) {
     localized += h.r.localized;
     frame_ms.push_back(h.r.search.timing.total_ms());
-    if (!o.json) {
+    if (!o.json && !o.quiet) {
       progress.clear();
       std::cout << hitLine(h) << "\n";
     }
@@ -171,6 +172,7 @@ void addLocalizeCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and every frame's answer as one JSON object");
+  cmd->add_flag("--quiet", o->quiet, "print the summary only, no line per frame");
   cmd->add_flag("--force", o->force, "overwrite an existing --out file");
   addTrackOption(cmd, &o->track);
   cmd->callback([o] {
