@@ -21,6 +21,7 @@ struct LocalizeOptions {
   std::string labeller, labels_dir;  ///< --labeller, --labels-dir (as `sgtllc run`)
   int threads = 0;
   bool json = false;
+  bool quiet = false;  ///< --quiet: the summary only, no line per frame
   bool force = false;
   bool track = false;  ///< --track: the frames are one stream (map::RelocalizationTracker)
 };
@@ -110,7 +111,7 @@ void localizeCommand(const LocalizeOptions& o) {
   const auto on_hit = [&](size_t index, const Hit& h) {
     localized += h.r.localized;
     frame_ms.push_back(h.r.search.timing.total_ms());
-    if (!o.json) {
+    if (!o.json && !o.quiet) {
       progress.clear();
       std::cout << hitLine(h) << "\n";
     }
@@ -159,7 +160,7 @@ void addLocalizeCommand(CLI::App& app) {
   auto o = std::make_shared<LocalizeOptions>();
   CLI::App* cmd = app.add_subcommand("localize", "Relocalize the frames of a sequence in a saved map (`run --save-map`)");
   cmd->add_option("--map", o->map, "map file written by `sgtllc run --save-map`")->required();
-  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin and labels/NNNNNN.label");
+  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin (and labels/NNNNNN.label, unless --labeller geometric or --labels-dir)");
   cmd->add_option("--nodes", o->nodes, "instead of SEQ_DIR: a folder of node files NAME.txt, frames in name order");
   cmd->add_option("--out", o->out,
                   "write one CSV row per frame: query,map_frame,localized,score,score_c,lateral, T_mapframe_query "
@@ -171,11 +172,12 @@ void addLocalizeCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and every frame's answer as one JSON object");
+  cmd->add_flag("--quiet", o->quiet, "print the summary only, no line per frame");
   cmd->add_flag("--force", o->force, "overwrite an existing --out file");
   addTrackOption(cmd, &o->track);
   cmd->callback([o] {
     if (o->sequence.empty() == o->nodes.empty()) {
-      throw CLI::ValidationError("localize", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
+      throw CLI::ValidationError("localize", "give either SEQ_DIR (velodyne/, with labels/ unless --labeller geometric) or --nodes NODE_DIR");
     }
     localizeCommand(*o);
   });

@@ -32,6 +32,7 @@ struct RunOptions {
   int threads = 0;
   int accumulate = 1;  ///< --accumulate: scans merged into each frame
   bool json = false;
+  bool quiet = false;  ///< --quiet: the summary only, no line per loop
   bool force = false;
   bool online = false;  ///< re-optimise at every loop instead of once at the end
 };
@@ -125,7 +126,7 @@ void runSequence(const RunOptions& o) {
       const ClosingLoop& edge =
           edges.emplace_back(detectedLoop(index, *c, detector.database(), source, config.backend.loops));
       Loop& l = loops.emplace_back(loopRecord(edge, c->match.score_t, c->match.score_c));
-      if (!o.json) {
+      if (!o.json && !o.quiet) {
         progress.clear();
         const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();
         std::cout << "loop " << io::escapeContent(l.query, io::kNameBytes) << " -> "
@@ -138,7 +139,7 @@ void runSequence(const RunOptions& o) {
         const auto start = std::chrono::steady_clock::now();
         const backend::BackendResult& update = online->closeLoop(static_cast<int>(index), edge);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (!o.json) std::cout << onlineUpdateLine(update, ms) << std::flush;
+        if (!o.json && !o.quiet) std::cout << onlineUpdateLine(update, ms) << std::flush;
       }
     }
     progress.update(index + 1, std::to_string(loops.size()) + " loops");
@@ -202,8 +203,8 @@ void runSequence(const RunOptions& o) {
 
 void addRunCommand(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
-  CLI::App* cmd = app.add_subcommand("run", "Stream a sequence (scans and labels, or node files) through the online detector");
-  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin and labels/NNNNNN.label");
+  CLI::App* cmd = app.add_subcommand("run", "Stream a sequence (scans, their labels unless --labeller geometric, or node files) through the online detector");
+  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin (and labels/NNNNNN.label, unless --labeller geometric or --labels-dir)");
   cmd->add_option("--nodes", o->nodes,
                   "instead of SEQ_DIR: a folder of node files NAME.txt (x y z label rows), frames in name order");
   cmd->add_option("--out", o->out,
@@ -228,10 +229,11 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (default: the config's `threads`)")
       ->check(CLI::Range(1, kMaxThreads));
   cmd->add_flag("--json", o->json, "print the summary and the loops as one JSON object");
+  cmd->add_flag("--quiet", o->quiet, "print the summary only, no line per loop (or per --online update)");
   cmd->add_flag("--force", o->force, "overwrite existing output files");
   cmd->callback([o] {
     if (o->sequence.empty() == o->nodes.empty()) {
-      throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/ and labels/) or --nodes NODE_DIR");
+      throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/, with labels/ unless --labeller geometric) or --nodes NODE_DIR");
     }
     const bool closes = !o->outputs.trajectory.empty() || !o->outputs.graph.empty() || !o->outputs.loops.empty() ||
                         (!o->calib.empty() && o->accumulate == 1) || o->online;

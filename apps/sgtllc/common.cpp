@@ -49,8 +49,16 @@ eval::FrameSource frameSource(const std::string& sequence, const std::string& no
   if (!labels_dir.empty() && config.labeller.source == LabelSource::kGeometric) {
     throw Error("--labels-dir and --labeller geometric exclude each other (the geometric labeller reads no labels)");
   }
-  return nodes.empty() ? eval::FrameSource::semanticKitti(sequence, config, {labels_dir})
-                       : eval::FrameSource::nodeFiles(nodes, config);
+  if (!nodes.empty()) return eval::FrameSource::nodeFiles(nodes, config);
+  try {
+    return eval::FrameSource::semanticKitti(sequence, config, {labels_dir});
+  } catch (const Error& e) {
+    // io says which label file is missing; the ways round it are options of this tool (docs/labeller.md).
+    if (std::string(e.what()).find(": missing label file (") == std::string::npos) throw;
+    throw Error(std::string(e.what()) +
+                ". Without labels, --labeller geometric labels the scans alone; --labels-dir DIR reads NNNNNN.label "
+                "files from DIR (e.g. a segmentation network's predictions)");
+  }
 }
 
 std::vector<Eigen::Vector3f> readScanPoints(const std::string& path) {

@@ -4,9 +4,10 @@
     PYTHONPATH=build/python /usr/bin/python3 examples/python/run_sequence.py SEQ_DIR [--config FILE] [--plot pr.png]
 
 SEQ_DIR holds velodyne/NNNNNN.bin, labels/NNNNNN.label and poses.txt (+ calib.txt), e.g. a sequence written by
-`sgtllc simulate --out SEQ_DIR --frames 300 --seed 1`. A detected loop is a true positive if the two frames are
-within --max-distance metres in the ground truth (the protocol of `sgtllc eval`, top-1 per query). The plot needs
-matplotlib (Debian: python3-matplotlib); without it the curve's summary is printed only.
+`sgtllc simulate --out SEQ_DIR --frames 600 --seed 1` (one revisit, 1.5 GB; 300 frames are too short for any).
+A detected loop is a true positive if the two frames are within --max-distance metres in the ground truth (the
+protocol of `sgtllc eval`, top-1 per query). The plot needs matplotlib (Debian: python3-matplotlib); without it
+the curve's summary is printed only.
 """
 import argparse
 import os
@@ -14,6 +15,17 @@ import os
 import numpy as np
 
 import sgtllc
+
+
+def plot_points(curve):
+    """The curve's (recall, precision) in plotting order: recall ascending from the point (0, 1).
+
+    precision_recall lists its points highest threshold first (recall ascending) and appends (recall 0,
+    precision 1) last, as sklearn does; drawn in that order the appended point closes the curve into a box.
+    """
+    recall = np.concatenate(([0.0], np.asarray(curve.recall)[:-1]))
+    precision = np.concatenate(([1.0], np.asarray(curve.precision)[:-1]))
+    return recall, precision
 
 
 def main():
@@ -62,8 +74,10 @@ def main():
     except ImportError:
         print("matplotlib is not installed (Debian: python3-matplotlib): no plot")
         return
+    recall, precision = plot_points(curve)
     fig, ax = plt.subplots(figsize=(5, 4))
-    ax.plot(curve.recall, curve.precision, drawstyle="steps-post")
+    # As sklearn's PrecisionRecallDisplay: between two recalls, the precision of the point at the higher one.
+    ax.plot(recall, precision, drawstyle="steps-pre")
     ax.set(xlabel="recall", ylabel="precision", xlim=(0, 1.02), ylim=(0, 1.02), title=os.path.basename(args.sequence))
     fig.tight_layout()
     fig.savefig(args.plot, dpi=120)
