@@ -184,6 +184,54 @@ TEST_F(OutputFile, ALeftoverOfSigkillIsRecognisableAndNoReaderTakesItForAFrame) 
   EXPECT_EQ(eval::FrameSource::nodeFiles(path("nodes"), Config{}).size(), 1u);
 }
 
+TEST_F(OutputFile, TheNextSaveRemovesALeftoverButNotALiveTemporary) {
+  write("out/keep.txt", "k");
+  const auto temporaries = [&] {
+    size_t n = 0;
+    for (const std::string& name : entries("out")) n += io::isTemporaryFileName(name);
+    return n;
+  };
+  // A save in progress in another process, holding its temporary file until told to go on.
+  int ready[2], go[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  ASSERT_EQ(::pipe(go), 0);
+  const pid_t live = ::fork();
+  if (live == 0) {
+    io::writeThroughTemporary(path("out/b.txt"), io::Overwrite::kRefuse, [&](const std::string& tmp) {
+      char c = 'r';
+      if (::write(ready[1], &c, 1) != 1 || ::read(go[0], &c, 1) != 1) ::_exit(5);
+      std::ofstream(tmp) << "b";
+    });
+    ::_exit(0);
+  }
+  char c = 0;
+  ASSERT_EQ(::read(ready[0], &c, 1), 1);
+  // A save killed half way: SIGKILL runs no handler, its temporary file stays.
+  const int killed = inChild([&] {
+    io::writeThroughTemporary(path("out/a.txt"), io::Overwrite::kRefuse, [](const std::string& tmp) {
+      std::ofstream(tmp) << "partial";
+      ::raise(SIGKILL);
+    });
+  });
+  ASSERT_TRUE(WIFSIGNALED(killed));
+  EXPECT_EQ(temporaries(), 2u);
+  // The next process to save into the folder removes the leftover (its lock died with it), not the live one.
+  const int next = inChild([&] { io::writeFileAtomically(path("out/c.txt"), "c", io::Overwrite::kRefuse); });
+  ASSERT_TRUE(WIFEXITED(next));
+  EXPECT_EQ(temporaries(), 1u);
+  ASSERT_EQ(::write(go[1], &c, 1), 1);
+  int status = 0;
+  ::waitpid(live, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(temporaries(), 0u);
+  EXPECT_EQ(readAll(path("out/b.txt")), "b");
+  EXPECT_EQ(readAll(path("out/c.txt")), "c");
+  EXPECT_EQ(readAll(path("out/keep.txt")), "k");
+  EXPECT_FALSE(fs::exists(path("out/a.txt")));
+  for (int fd : {ready[0], ready[1], go[0], go[1]}) ::close(fd);
+}
+
 TEST(OutputFileNames, OnlyTheTemporaryPatternIsRecognised) {
   EXPECT_TRUE(io::isTemporaryFileName(".a.bin.sgtllc-tmp-Ab3dEf6hIj9K"));
   EXPECT_FALSE(io::isTemporaryFileName("a.bin.sgtllc-tmp-Ab3dEf6hIj9K"));    // not hidden

@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <limits.h>
+#include <dirent.h>
+#include <sys/file.h>
 #include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -15,6 +17,7 @@
 #include <filesystem>
 #include <mutex>
 #include <random>
+#include <set>
 
 #include "sgtllc/types.h"
 
@@ -109,6 +112,33 @@ std::string temporaryPathFor(const std::string& destination) {
   return (dest.parent_path() / ("." + name + std::string(kMarker) + randomLetters())).string();
 }
 
+/// Removes the temporary files in @p folder that a killed save left behind (kill -9 runs no handler), once per
+/// folder and process. A live temporary file holds an exclusive flock(2) from its creation until its rename, and
+/// the kernel drops the lock when its process dies, so a temporary file whose lock can be taken is a leftover;
+/// one whose lock is held (another save, in this process or another) is left alone.
+void removeLeftovers(const fs::path& folder) {
+  static std::mutex mutex;
+  static std::set<std::string> done;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (!done.insert(folder.string()).second) return;
+  }
+  const std::string dir = folder.empty() ? "." : folder.string();
+  DIR* d = ::opendir(dir.c_str());
+  if (!d) return;
+  while (const dirent* e = ::readdir(d)) {
+    if (!isTemporaryFileName(e->d_name)) continue;
+    const int fd = ::openat(::dirfd(d), e->d_name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) continue;
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::flock(fd, LOCK_EX | LOCK_NB) == 0) {
+      ::unlinkat(::dirfd(d), e->d_name, 0);
+    }
+    ::close(fd);
+  }
+  ::closedir(d);
+}
+
 }  // namespace
 
 TemporaryFile::TemporaryFile(const std::string& destination) : destination_(destination) {
@@ -120,7 +150,9 @@ TemporaryFile::TemporaryFile(const std::string& destination) : destination_(dest
     if (errno != EEXIST) fail(errno);
   }
   if (fd_ < 0) fail(EEXIST);
+  ::flock(fd_, LOCK_EX | LOCK_NB);  // a new file: nobody else can hold its lock (removeLeftovers)
   slot_ = listForSignals(path_);
+  removeLeftovers(fs::path(destination).parent_path());
 }
 
 TemporaryFile::~TemporaryFile() {
@@ -175,11 +207,9 @@ void syncFolder(const fs::path& folder) {
 }  // namespace
 
 void TemporaryFile::publish(Overwrite overwrite) {
-  // The data reach the disk before the name does: a power cut leaves the old file or the whole new one.
+  // The data reach the disk before the name does: a power cut leaves the old file or the whole new one. The file
+  // stays open, and so locked, until its temporary name is gone (removeLeftovers must not take it for a leftover).
   if (::fsync(fd_) != 0) fail(errno);
-  const int fd = fd_;
-  fd_ = -1;
-  if (::close(fd) != 0) fail(errno);
   const int rc = overwrite == Overwrite::kReplace ? std::rename(path_.c_str(), destination_.c_str())
                                                    : renameNoReplace(path_.c_str(), destination_.c_str());
   if (rc != 0) {
@@ -191,6 +221,8 @@ void TemporaryFile::publish(Overwrite overwrite) {
   published_ = true;
   unlist(slot_);
   slot_ = -1;
+  ::close(fd_);  // fsynced already: nothing is left for close(2) to report
+  fd_ = -1;
   syncFolder(fs::path(destination_).parent_path());
 }
 

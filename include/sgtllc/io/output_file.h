@@ -14,7 +14,9 @@
 ///   and re-raises the signal; an application's own handlers are left alone, the library prints nothing).
 /// - A process killed by SIGKILL (or a power cut) cannot remove it: such a leftover keeps the hidden, recognisable
 ///   name, never the destination's, so no reader takes it for output (the sequence and node-folder readers list
-///   `*.bin` / `*.txt` only, and the name ends in the random letters); delete `.*.sgtllc-tmp-*` files at leisure.
+///   `*.bin` / `*.txt` only, and the name ends in the random letters), and the next save into that folder removes
+///   it: a live temporary file holds a flock(2) until its rename, which dies with its process, so an unlocked one is
+///   a leftover (temporary_file.h).
 ///
 /// With Overwrite::kRefuse the rename itself refuses an existing destination (Linux renameat2 RENAME_NOREPLACE, or a
 /// hard link where the file system lacks it), so a file that appeared after the up-front check is still kept.
