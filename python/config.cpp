@@ -144,6 +144,12 @@ void sections(py::module_& m) {
                      "score_t decays linearly for an estimated offset beyond this (m)")
       .def_readwrite("offset_decay_end", &VerificationConfig::offset_decay_end,
                      "... to 0 at this offset (m); 0 = no decay")
+      .def_readwrite("min_footprint_overlap", &VerificationConfig::min_footprint_overlap,
+                     "reject a verified candidate whose pose puts less than this share of the query's structure "
+                     "cells on the match's; 0 = off")
+      .def_readwrite("footprint_cell", &VerificationConfig::footprint_cell, "side of a footprint cell (m)")
+      .def_readwrite("footprint_radius", &VerificationConfig::footprint_radius,
+                     "footprints reach this far from the sensor (m)")
       .def_readwrite("score_formula", &VerificationConfig::score_formula, "score_t formula")
       .def_readwrite("max_tilt_deg", &VerificationConfig::max_tilt_deg,
                      "RANSAC skips a rotation tilting the up axis more than this (deg); 180 = no check")

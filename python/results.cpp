@@ -33,7 +33,14 @@ void bindResults(py::module_& m) {
   py::enum_<Rejection>(m, "Rejection", "Why a candidate got a zero score.")
       .value("NONE", Rejection::kNone, "passed the gates and RANSAC accepted a hypothesis")
       .value("FEW_ASSOCIATIONS", Rejection::kFewAssociations, "score_c < σ_3 or |LA| < min_associations")
-      .value("RANSAC_FAILED", Rejection::kRansacFailed, "no hypothesis reached min_inliers");
+      .value("RANSAC_FAILED", Rejection::kRansacFailed, "no hypothesis reached min_inliers")
+      .value("FOOTPRINT_MISMATCH", Rejection::kFootprint,
+             "the pose puts too few of the query's structure cells on the match's (footprint check)");
+
+  py::class_<FootprintOverlap>(m, "FootprintOverlap", "The footprint check of a verified pose.")
+      .def_readonly("compared", &FootprintOverlap::compared,
+                    "query structure cells compared (0: the check did not run)")
+      .def_readonly("share", &FootprintOverlap::share, "share of them on or next to a match structure cell");
   py::enum_<Search>(m, "Search", "Whether a frame's query searched the database, or why not.")
       .value("SEARCHED", Search::kSearched, "older frames existed and were searched")
       .value("TOO_RECENT", Search::kTooRecent, "no stored frame is retrieval.exclude_recent or more frames older")
@@ -73,6 +80,7 @@ void bindResults(py::module_& m) {
       .def_readonly("score_t", &MatchResult::score_t, "loop score; 0 unless rejection is NONE")
       .def_readonly("rejection", &MatchResult::rejection, "why score_t is 0, or NONE")
       .def_readonly("T_match_query", &MatchResult::T_match_query, "(4, 4): p_match = T_match_query @ p_query")
+      .def_readonly("footprint", &MatchResult::footprint, "the footprint check under the verified pose")
       .def_property_readonly("association_pairs", [](const MatchResult& r) { return pairsArray(r, nullptr); },
                              "(K, 2) int32: query node, match node of every association")
       .def_property_readonly("inlier_pairs", [](const MatchResult& r) { return pairsArray(r, &r.inliers); },

@@ -113,6 +113,9 @@ class VerificationConfig:
     neighbour_frames: int
     offset_decay_start: float
     offset_decay_end: float
+    min_footprint_overlap: float
+    footprint_cell: float
+    footprint_radius: float
 class GroundConfig:
     sectors: int
     bin: float
@@ -219,7 +222,11 @@ class Config:
 
 # --- results (results.cpp) ---
 class Rejection(Enum):
-    NONE: int; FEW_ASSOCIATIONS: int; RANSAC_FAILED: int
+    NONE: int; FEW_ASSOCIATIONS: int; RANSAC_FAILED: int; FOOTPRINT_MISMATCH: int
+
+class FootprintOverlap:
+    compared: int
+    share: float
 class Search(Enum):
     SEARCHED: int; TOO_RECENT: int; WARMUP: int
 class StageTimes:
@@ -252,6 +259,7 @@ class MatchResult:
     T_match_query: np.ndarray  # (4, 4) float64, read-only view
     association_pairs: np.ndarray  # (K, 2) int32
     inlier_pairs: np.ndarray  # (n_in, 2) int32
+    footprint: FootprintOverlap
 class Refinement:
     status: RefinementStatus
     used: bool

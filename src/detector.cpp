@@ -30,14 +30,19 @@ const Config& validated(const Config& config) {
 /// the urban and suburban simulations' queries find ~85 % of their candidates here.
 constexpr size_t kDescribedCacheFrames = 256;
 
+/// The stored frames' footprints (LoopDetector::footprints) where the searcher has them; a relocalizer's map
+/// frames have none.
+using Footprints = std::vector<Footprint>;
+
 void search(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database, int last,
-            const Config& config, FrameResult* result, internal::DescribedCache* cache);
+            const Config& config, FrameResult* result, internal::DescribedCache* cache, const Footprints* footprints);
 
 }  // namespace
 
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads),
+      labels_(effectiveLabelConfig(config)),
       database_(config.retrieval, config.threads),
       clouds_(config.registration, effectiveLabelConfig(config)),
       described_(std::make_unique<internal::DescribedCache>(kDescribedCacheFrames)) {
@@ -57,7 +62,14 @@ LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopD
   database_.setSearch(config_.retrieval, config_.threads);
   // The resumed frames have no registration clouds: their loops keep the SVD pose (as frames given as nodes).
   for (int f = 0; f < database_.size(); ++f) clouds_.add(CompactCloud{});
+  footprints_.resize(static_cast<size_t>(database_.size()));  // and no footprints: their candidates go unchecked
+  footprint_bytes_ = footprints_.size() * sizeof(Footprint);
 }
+
+Footprint LoopDetector::footprint(const LabeledCloud& cloud) const {
+  return computeFootprint(cloud, labels_, config_.verification);
+}
+
 
 int LoopDetector::firstSearchedFrame() const {
   return std::max(config_.retrieval.exclude_recent, config_.retrieval.warmup_frames);
@@ -74,7 +86,7 @@ FrameResult LoopDetector::process(const LabeledCloud& cloud) {
   const double prepare_ms = msSince(refine_start);
   const ExtractionStats stats = result.extraction;
   const double extraction_ms = result.timing.extraction_ms;
-  result = process(std::move(extracted.nodes), std::move(clouds));
+  result = process(std::move(extracted.nodes), std::move(clouds), footprint(cloud));
   result.extraction = stats;
   result.timing.extraction_ms = extraction_ms;
   result.timing.refinement_ms += prepare_ms;
@@ -83,8 +95,8 @@ FrameResult LoopDetector::process(const LabeledCloud& cloud) {
 
 FrameResult LoopDetector::process(std::vector<Node> nodes) { return process(std::move(nodes), RegistrationClouds{}); }
 
-FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds clouds) {
-  FrameResult result = processNodes(std::move(nodes), FrameResult{});
+FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds clouds, Footprint footprint) {
+  FrameResult result = processNodes(std::move(nodes), std::move(footprint), FrameResult{});
   // Only the declared loop is refined (issue 13 item 4), against the stored cloud of its frame.
   if (result.is_loop && clouds_.enabled() && !clouds.query.empty()) {
     const auto start = Clock::now();
@@ -97,11 +109,12 @@ FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds cl
   return result;
 }
 
-FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult result) {
+FrameResult LoopDetector::processNodes(std::vector<Node> nodes, Footprint footprint, FrameResult result) {
   result.frame = database_.size();
   auto start = Clock::now();
-  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
-                                              /*with_global=*/false, config_.numClasses());
+  DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
+                                        /*with_global=*/false, config_.numClasses());
+  query.footprint = std::move(footprint);
   std::vector<float> key = retrieval::computeRetrievalKey(query.graph, config_);
   result.num_nodes = query.numNodes();
   result.timing.description_ms = msSince(start);
@@ -113,16 +126,19 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, FrameResult resu
   } else if (result.frame < rc.exclude_recent) {
     result.search = Search::kTooRecent;
   } else {
-    search(query, key, database_, result.frame - rc.exclude_recent, config_, &result, described_.get());
+    search(query, key, database_, result.frame - rc.exclude_recent, config_, &result, described_.get(),
+           &footprints_);
   }
 
   database_.add(StoredFrame{query.graph.nodes, std::move(key)});
+  footprint_bytes_ += sizeof(Footprint) + query.footprint.bytes();
+  footprints_.push_back(std::move(query.footprint));
   return result;
 }
 
 void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database,
                     int last, const Config& config, FrameResult* result) {
-  search(query, key, database, last, config, result, nullptr);
+  search(query, key, database, last, config, result, nullptr, nullptr);
 }
 
 namespace {
@@ -130,7 +146,8 @@ namespace {
 /// Verifies candidates[first..] against the query; each writes only its own slot. Cache look-ups and inserts stay on
 /// this thread, in candidate order; workers describe the misses.
 void verifyCandidates(const DescribedFrame& query, const FrameDatabase& database, const Config& config,
-                      internal::DescribedCache* cache, std::vector<Candidate>& candidates, size_t first) {
+                      internal::DescribedCache* cache, const Footprints* footprints, std::vector<Candidate>& candidates,
+                      size_t first) {
   const size_t count = candidates.size() - first;
   std::vector<std::shared_ptr<const DescribedFrame>> described(count);
   if (cache) {
@@ -139,8 +156,10 @@ void verifyCandidates(const DescribedFrame& query, const FrameDatabase& database
   parallelFor(static_cast<int>(count), config.threads, [&](int c) {
     Candidate& cand = candidates[first + static_cast<size_t>(c)];
     if (!described[c]) {
-      described[c] = std::make_shared<const DescribedFrame>(describeFrame(
-          database.nodes(cand.frame), config.graph, config.descriptor, /*with_global=*/false, config.numClasses()));
+      DescribedFrame frame = describeFrame(database.nodes(cand.frame), config.graph, config.descriptor,
+                                           /*with_global=*/false, config.numClasses());
+      if (footprints) frame.footprint = (*footprints)[static_cast<size_t>(cand.frame)];
+      described[c] = std::make_shared<const DescribedFrame>(std::move(frame));
     }
     cand.match = matchFrames(query, *described[c], config);
   });
@@ -156,7 +175,7 @@ int chooseCandidate(const std::vector<Candidate>& candidates, const Verification
 }
 
 void search(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database, int last,
-            const Config& config, FrameResult* result, internal::DescribedCache* cache) {
+            const Config& config, FrameResult* result, internal::DescribedCache* cache, const Footprints* footprints) {
   auto start = Clock::now();
   std::vector<RetrievedFrame> retrieved = database.query(key, last, config.retrieval.num_candidates);
   result->timing.retrieval_ms = msSince(start);
@@ -169,7 +188,7 @@ void search(const DescribedFrame& query, const std::vector<float>& key, const Fr
     result->candidates[c].frame = retrieved[c].frame;
     result->candidates[c].distance2 = retrieved[c].distance2;
   }
-  verifyCandidates(query, database, config, cache, result->candidates, 0);
+  verifyCandidates(query, database, config, cache, footprints, result->candidates, 0);
   result->best = chooseCandidate(result->candidates, config.verification);
 
   // Neighbour check (VerificationConfig::neighbour_frames): the top-1 loop's database neighbours that retrieval
@@ -189,7 +208,7 @@ void search(const DescribedFrame& query, const std::vector<float>& key, const Fr
       result->candidates.push_back(std::move(added));
     }
     if (result->candidates.size() > first_added) {
-      verifyCandidates(query, database, config, cache, result->candidates, first_added);
+      verifyCandidates(query, database, config, cache, footprints, result->candidates, first_added);
       std::stable_sort(result->candidates.begin(), result->candidates.end(),
                        [](const Candidate& a, const Candidate& b) { return a.frame < b.frame; });
       result->best = chooseCandidate(result->candidates, config.verification);
@@ -210,13 +229,15 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   NodeExtractionResult q = extractor.extract(query);
   NodeExtractionResult m = extractor.extract(match);
   const double extraction_ms = msSince(start);
-  PairResult result = comparePair(std::move(q.nodes), std::move(m.nodes), config);
+  const LabelMap labels(effectiveLabelConfig(config));
+  PairResult result = comparePair(std::move(q.nodes), std::move(m.nodes), config,
+                                  computeFootprint(query, labels, config.verification),
+                                  computeFootprint(match, labels, config.verification));
   result.extraction_query = q.stats;
   result.extraction_match = m.stats;
   result.timing.extraction_ms = extraction_ms;
   if (config.registration.pair && result.match.rejection == Rejection::kNone) {
     const auto refine_start = Clock::now();
-    const LabelMap labels(effectiveLabelConfig(config));
     refinePair(&result, queryPoints(query, labels, config.registration), matchPoints(match, labels, config.registration),
                config);
     result.timing.refinement_ms = msSince(refine_start);
@@ -224,13 +245,16 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   return result;
 }
 
-PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config) {
+PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config,
+                       Footprint query_footprint, Footprint match_footprint) {
   config.validate();
   PairResult result;
   auto start = Clock::now();
   const int num_classes = config.numClasses();
-  const DescribedFrame q = describeFrame(std::move(query), config.graph, config.descriptor, true, num_classes);
-  const DescribedFrame m = describeFrame(std::move(match), config.graph, config.descriptor, true, num_classes);
+  DescribedFrame q = describeFrame(std::move(query), config.graph, config.descriptor, true, num_classes);
+  DescribedFrame m = describeFrame(std::move(match), config.graph, config.descriptor, true, num_classes);
+  q.footprint = std::move(query_footprint);
+  m.footprint = std::move(match_footprint);
   result.timing.description_ms = msSince(start);
   start = Clock::now();
   result.match = matchFrames(q, m, config);

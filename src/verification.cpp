@@ -16,6 +16,8 @@ const char* rejectionName(Rejection r) {
       return "few_associations";
     case Rejection::kRansacFailed:
       return "ransac_failed";
+    case Rejection::kFootprint:
+      return "footprint_mismatch";
   }
   return "?";
 }
@@ -68,6 +70,22 @@ void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, 
   }
   std::sort(result->inliers.begin(), result->inliers.end());
   result->T_match_query = guided.T_match_query;
+}
+
+/// Fewest query cells the footprint check compares before it judges: a scan of open fields or one whose pose
+/// leaves it mostly outside the match's reach says too little either way.
+constexpr int kMinFootprintCells = 20;
+
+/// The footprint check (algorithm §7.6): a pose under which the structure around the nodes does not agree is not
+/// a revisit, however many nodes agree.
+void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc,
+                     MatchResult* result) {
+  if (vc.min_footprint_overlap <= 0.0 || query.footprint.empty() || match.footprint.empty()) return;
+  result->footprint = footprintOverlap(query.footprint, match.footprint, result->T_match_query);
+  if (result->footprint.compared < kMinFootprintCells || result->footprint.share >= vc.min_footprint_overlap) return;
+  result->rejection = Rejection::kFootprint;
+  result->score_t = 0.0;
+  result->T_match_query = Eigen::Matrix4d::Identity();
 }
 
 }  // namespace
@@ -128,6 +146,7 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
       break;
   }
   result.score_t *= offsetWeight(result.T_match_query.topRightCorner<3, 1>().norm(), vc);
+  checkFootprints(query, match, vc, &result);
   return result;
 }
 

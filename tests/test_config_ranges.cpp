@@ -92,6 +92,9 @@ std::vector<Range> ranges() {
   r.push_back({"verification.neighbour_frames", {"0", "50"}, {"-1", "51"}, "[0, 50]"});
   r.push_back({"verification.offset_decay_start", {"0", "5"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.offset_decay_end", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
+  r.push_back({"verification.min_footprint_overlap", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
+  r.push_back({"verification.footprint_cell", {"0.2", "10"}, {"0.1", "11"}, "[0.2, 10]"});
+  r.push_back({"verification.footprint_radius", {"5", "200"}, {"4", "201"}, "[5, 200]"});
   r.push_back({"verification.seed", {"0", "4294967295"}, {"-1", "4294967296"}, "expected an integer in 0..4294967295",
                true});
   const std::string lg = "labeller.ground.", ls = "labeller.segments.";
@@ -212,8 +215,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 34 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 34 + 18 + 15 + 26);
+  // 8 classes incl. vehicle, 37 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 37 + 18 + 15 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

@@ -129,6 +129,7 @@ struct FolderPairs {
   std::vector<eval::LoopPairLabel> pairs;
   std::vector<long> numbers;
   std::vector<std::vector<Node>> nodes;
+  std::vector<Footprint> footprints;  ///< the footprint check of the pair list, as online
   eval::PairListRun run;
   eval::PairListMetrics metrics;
 
@@ -146,6 +147,7 @@ struct FolderPairs {
     auto chained = options.on_frame;
     options.on_frame = [this, chained](size_t i, const FrameResult& r, const LoopDetector& detector) {
       nodes.push_back(detector.database().nodes(r.frame));
+      footprints.push_back(detector.footprints()[static_cast<size_t>(r.frame)]);
       numbers.push_back(static_cast<long>(i));
       if (chained) chained(i, r, detector);
     };
@@ -157,7 +159,7 @@ struct FolderPairs {
     for (size_t i = 0; i < numbers.size(); ++i) numbers[i] = seq.frames[i].frame;
     eval::EvalOptions quiet = options;
     quiet.progress = nullptr;
-    run = eval::runPairListEvaluation(numbers, nodes, pairs, truth, config, quiet);
+    run = eval::runPairListEvaluation(numbers, nodes, pairs, truth, config, quiet, footprints);
     metrics = eval::computePairListMetrics(run, options);
     extra.metrics["pair_list"] = json();
     extra.section += eval::pairListSection(metrics, path, pairListNote(run, metrics));

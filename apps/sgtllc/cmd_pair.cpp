@@ -118,6 +118,11 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
               << " m (verification.offset_decay_start / end " << config.verification.offset_decay_start << " / "
               << config.verification.offset_decay_end << " m)\n";
   }
+  if (m.footprint.compared > 0) {
+    std::cout << "footprint: " << fixed(m.footprint.share, 3) << " of " << m.footprint.compared
+              << " structure cells agree under the pose (verification.min_footprint_overlap "
+              << config.verification.min_footprint_overlap << ")\n";
+  }
   if (m.rejection == Rejection::kNone) {
     std::cout << "T_match_query (maps query points into the match frame"
               << (r.refinement && r.refinement->used() ? ", refined by ICP" : "") << "):\n"
@@ -133,6 +138,12 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   std::cout << "time (ms): load " << fixed(load_ms, 2) << ", extraction " << fixed(t.extraction_ms, 2)
             << ", description " << fixed(t.description_ms, 2) << ", verification " << fixed(t.verification_ms, 2)
             << ", refinement " << fixed(t.refinement_ms, 2) << "\n";
+}
+
+/// The footprint check (algorithm §7.6), or null where it did not run (node files, the check off, no pose).
+Json footprintJson(const FootprintOverlap& f, const VerificationConfig& config) {
+  if (f.compared == 0) return nullptr;
+  return {{"share", f.share}, {"compared_cells", f.compared}, {"min_share", config.min_footprint_overlap}};
 }
 
 void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
@@ -182,6 +193,7 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                               {"associations", m.associations.size() - guided},
                               {"guided_pairs", guided},
                               {"inliers", m.inliers.size()},
+                              {"footprint", footprintJson(m.footprint, config.verification)},
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},
                               {"refinement", refinement},
@@ -197,13 +209,17 @@ void runPair(const PairOptions& o) {
   for (const auto& [name, f] : {std::pair<const std::string&, const FrameNodes&>{o.query, q}, {o.match, mt}}) {
     warnAboutInput(name, f.stats, static_cast<int>(f.nodes.size()), f.from_node_file ? "node rows" : "points");
   }
-  PairResult r = comparePair(q.nodes, mt.nodes, config);
+  const LabelMap labels(effectiveLabelConfig(config));
+  // Node files carry no points: no footprint check, and the SVD pose stands.
+  const bool scans = !q.from_node_file && !mt.from_node_file;
+  PairResult r = comparePair(q.nodes, mt.nodes, config,
+                             scans ? computeFootprint(q.cloud, labels, config.verification) : Footprint{},
+                             scans ? computeFootprint(mt.cloud, labels, config.verification) : Footprint{});
   r.extraction_query = q.stats;
   r.extraction_match = mt.stats;
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
   const auto refine_start = std::chrono::steady_clock::now();
-  const LabelMap labels(effectiveLabelConfig(config));
-  if (!q.from_node_file && !mt.from_node_file) {  // node files carry no points: the SVD pose stands
+  if (scans) {
     // Each scan is given up to its registration points, one after the other: the peak holds one big scan.
     std::vector<Eigen::Vector3f> query_points = queryPoints(std::move(q.cloud), labels, config.registration);
     refinePair(&r, query_points, matchPoints(std::move(mt.cloud), labels, config.registration), config);

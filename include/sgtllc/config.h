@@ -303,6 +303,15 @@ struct VerificationConfig {
   /// ... and the offset at which score_t reaches 0 (m); 0 = no decay, as the paper [0, 1000], 0 or greater than
   /// offset_decay_start.
   double offset_decay_end = 20.0;
+  /// Footprint check (footprint.h, algorithm §7.6): a verified candidate is rejected (Rejection::kFootprint) when,
+  /// under its pose, fewer than this share of the query's structure cells land on or next to the match's (with at
+  /// least 20 cells compared); 0 = off, as the paper [0, 1]. Few nodes (a sparse sensor: 5–15 a frame) can agree
+  /// by chance between two places with similar objects; the walls and vegetation around them rarely do. Needs the
+  /// scans' points: frames given as nodes, and the frames of a loaded map, are not checked. [deviation:
+  /// BENCHMARKS.md "Footprint check"]
+  double min_footprint_overlap = 0.5;
+  double footprint_cell = 0.5;     ///< side of a footprint cell (m) [0.2, 10]
+  double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m) [5, 200]
   /// RANSAC random seed; every candidate starts from it (algorithm §7.2 [CHOICE]) [0, 2³² − 1].
   uint32_t seed = 42;
 };

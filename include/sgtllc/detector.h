@@ -10,6 +10,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/database.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/frame.h"
 #include "sgtllc/node_extraction.h"
 #include "sgtllc/registration/cloud_store.h"
@@ -92,9 +93,14 @@ class LoopDetector {
   /// Throws sgtllc::Error for more than graph.max_nodes nodes, a label outside 0..C−1 or a non-finite centre; the
   /// frame is then not stored.
   FrameResult process(std::vector<Node> nodes);
-  /// The same with the frame's registration clouds (clouds().prepare of its scan), for callers that extract
-  /// nodes themselves, e.g. in parallel: the loop of this frame is refined as by process(cloud).
-  FrameResult process(std::vector<Node> nodes, RegistrationClouds clouds);
+  /// The same with the frame's registration clouds (clouds().prepare of its scan) and footprint (footprint() of
+  /// its scan), for callers that extract nodes themselves, e.g. in parallel: the frame is verified and its loop
+  /// refined as by process(cloud).
+  FrameResult process(std::vector<Node> nodes, RegistrationClouds clouds, Footprint footprint = {});
+
+  /// The footprint process(cloud) makes of a labelled scan (footprint.h); empty with the check off. A pure
+  /// function of the scan (safe in parallel).
+  Footprint footprint(const LabeledCloud& cloud) const;
 
   /// Index of the first frame whose query searches the database: max(retrieval.exclude_recent,
   /// retrieval.warmup_frames). A sequence of at most this many frames gets no candidate at all, so it cannot have a
@@ -107,12 +113,19 @@ class LoopDetector {
   const NodeExtractor& extractor() const { return extractor_; }
   /// Compact clouds of the stored frames (registration.online; empty otherwise).
   const CloudStore& clouds() const { return clouds_; }
+  /// Footprints of the stored frames (empty ones for node input and resumed frames), in frame order.
+  const std::vector<Footprint>& footprints() const { return footprints_; }
+  /// Bytes the stored footprints hold.
+  size_t footprintBytes() const { return footprint_bytes_; }
 
  private:
-  FrameResult processNodes(std::vector<Node> nodes, FrameResult result);
+  FrameResult processNodes(std::vector<Node> nodes, Footprint footprint, FrameResult result);
 
   Config config_;
   NodeExtractor extractor_;
+  LabelMap labels_;
+  std::vector<Footprint> footprints_;
+  size_t footprint_bytes_ = 0;
   FrameDatabase database_;
   CloudStore clouds_;
   /// Descriptions of recently verified frames (src/internal/described_cache.h); never changes a result.
@@ -143,8 +156,10 @@ struct PairResult {
 
 /// Compares two labelled scans: is @p query a revisit of @p match, and where is it in @p match's frame?
 PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, const Config& config = {});
-/// The same for ready-made node sets (no points: no refinement).
-PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config = {});
+/// The same for ready-made node sets (no points: no refinement), with the scans' footprints (computeFootprint)
+/// where the caller has them: the footprint check runs only when both are given.
+PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const Config& config = {},
+                       Footprint query_footprint = {}, Footprint match_footprint = {});
 
 /// Refines @p result's pose by ICP of @p query_points onto @p match_points (registrationPoints of the two scans)
 /// if registration.pair is on and verification found a pose; sets PairResult::refinement and, when it is used,

@@ -6,6 +6,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/descriptor.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/global_descriptor.h"
 #include "sgtllc/graph.h"
 
@@ -15,6 +16,7 @@ struct DescribedFrame {
   SemanticGraph graph;                ///< nodes, adjacency and second-order topology
   std::vector<LocalDescriptor> local; ///< one per node
   std::vector<float> global;          ///< Des^G
+  Footprint footprint;                ///< the scan's structure cells (footprint.h); empty for node input
 
   int numNodes() const { return graph.size(); }
 };

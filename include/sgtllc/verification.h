@@ -8,6 +8,7 @@
 
 #include "sgtllc/association.h"
 #include "sgtllc/config.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/frame.h"
 #include "sgtllc/ransac.h"
 
@@ -18,9 +19,12 @@ enum class Rejection {
   kNone,              ///< passed the gates and RANSAC accepted a hypothesis
   kFewAssociations,   ///< score_c < σ_3 or |LA| < min_associations (algorithm §7.1)
   kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (algorithm §7.2)
+  /// the pose puts too few of the query's structure cells on the match's (footprint.h; algorithm §7.6)
+  kFootprint,
 };
 
-/// "none", "few_associations" or "ransac_failed", as printed by the CLI and written to reports.
+/// "none", "few_associations", "ransac_failed" or "footprint_mismatch", as printed by the CLI and written to
+/// reports.
 const char* rejectionName(Rejection r);
 
 /// Outcome of comparing a query frame with one candidate ("match") frame.
@@ -38,6 +42,9 @@ struct MatchResult {
   /// (algorithm §7.5), or RANSAC's hypothesis where that refit would tilt beyond verification.max_tilt_deg; the
   /// identity unless rejection == kNone.
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();
+  /// The footprint check under the verified pose (algorithm §7.6); compared = 0 when it did not run (no footprints,
+  /// the check off, no pose).
+  FootprintOverlap footprint;
 };
 
 /// RANSAC parameters of the verification config.

@@ -32,6 +32,13 @@ def test_compare_pair_equals_cli_json(cli, query, match):
     assert r.match.association_pairs.tolist() == [list(p) for p in pairs]
     inliers = [[a["query_node"], a["match_node"]] for a in expected["matches"] if a["inlier"]]
     assert r.match.inlier_pairs.tolist() == inliers
+    # The footprint check ran where a pose was found (the true loop), with the CLI's figures.
+    if expected["footprint"] is None:
+        assert r.match.footprint.compared == 0
+    else:
+        assert r.match.footprint.compared == expected["footprint"]["compared_cells"] > 20
+        assert r.match.footprint.share == pytest.approx(expected["footprint"]["share"], abs=1e-12)
+        assert r.match.footprint.share > 0.9
 
 
 def test_true_loop_pose_matches_ground_truth(pair):

@@ -33,6 +33,7 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
   const LabelConfig& labels = labeller->nodeLabels();
   auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
   auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only
+  auto label_map = std::make_shared<const LabelMap>(labels);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
   source.read_ = [seq, geometric](size_t i) {
@@ -43,13 +44,14 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     return cloud;
   };
   // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
-  source.reduce_ = [extractor, store, labeller](const LabeledCloud& input) {
+  source.reduce_ = [extractor, store, labeller, label_map, verification = config.verification](const LabeledCloud& input) {
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
     LabeledCloud labelled;
     if (labeller->changesLabels()) labelled = labeller->apply(input);
     const LabeledCloud& cloud = labeller->changesLabels() ? labelled : input;
     NodeExtractionResult r = extractor->extract(cloud);
+    f.footprint = computeFootprint(cloud, *label_map, verification);
     f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
     f.nodes = std::move(r.nodes);
     f.stats = r.stats;
@@ -207,7 +209,7 @@ void streamFrames(const FrameSource& source, int threads, const std::function<vo
 void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
                     const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame) {
   streamFrames(source, threads, [&](size_t index, LoadedFrame& frame) {
-    FrameResult r = detector.process(std::move(frame.nodes), std::move(frame.clouds));
+    FrameResult r = detector.process(std::move(frame.nodes), std::move(frame.clouds), std::move(frame.footprint));
     r.timing.extraction_ms = frame.extraction_ms;
     r.timing.refinement_ms += frame.clouds_ms;
     r.extraction = frame.stats;

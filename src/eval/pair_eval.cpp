@@ -71,16 +71,20 @@ PairListRun planPairs(const std::vector<LoopPairLabel>& pairs, const std::map<lo
   return run;
 }
 
-/// Describes the needed frames in parallel (@p nodes_of gives a frame's nodes by the caller's index).
-std::vector<DescribedFrame> describeNeeded(const std::vector<size_t>& needed,
-                                           const std::function<std::vector<Node>(size_t)>& nodes_of,
+/// A frame's nodes and footprint (empty for node input), by the caller's index.
+using FrameOf = std::function<std::pair<std::vector<Node>, Footprint>(size_t)>;
+
+/// Describes the needed frames in parallel.
+std::vector<DescribedFrame> describeNeeded(const std::vector<size_t>& needed, const FrameOf& frame_of,
                                            const Config& config, int threads) {
   std::vector<DescribedFrame> frames(needed.size());
   std::vector<std::exception_ptr> errors(needed.size());
   parallelFor(static_cast<int>(needed.size()), threads, [&](int k) {
     try {
-      frames[k] = describeFrame(nodes_of(needed[k]), config.graph, config.descriptor, /*with_global=*/true,
+      auto [nodes, footprint] = frame_of(needed[k]);
+      frames[k] = describeFrame(std::move(nodes), config.graph, config.descriptor, /*with_global=*/true,
                                 config.numClasses());
+      frames[k].footprint = std::move(footprint);
     } catch (...) {
       errors[k] = std::current_exception();
     }
@@ -120,22 +124,32 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
   // Each frame that any available pair needs is read and clustered once.
   std::vector<size_t> needed;
   PairListRun run = planPairs(pairs, index_of, &needed, &slot_of);
-  const auto frames =
-      describeNeeded(needed, [&source](size_t i) { return source.load(i).nodes; }, config, options.threads);
+  const FrameOf frame_of = [&source](size_t i) {
+    LoadedFrame f = source.load(i);
+    return std::make_pair(std::move(f.nodes), std::move(f.footprint));
+  };
+  const auto frames = describeNeeded(needed, frame_of, config, options.threads);
   scorePairs(run, frames, slot_of, truth, config, options);
   return run;
 }
 
 PairListRun runPairListEvaluation(const std::vector<long>& numbers, const std::vector<std::vector<Node>>& nodes,
                                   const std::vector<LoopPairLabel>& pairs, const GroundTruth& truth,
-                                  const Config& config, const EvalOptions& options) {
+                                  const Config& config, const EvalOptions& options,
+                                  const std::vector<Footprint>& footprints) {
   config.validate();
   if (numbers.size() != nodes.size()) throw Error("runPairListEvaluation: one node set per frame number is needed");
+  if (!footprints.empty() && footprints.size() != nodes.size()) {
+    throw Error("runPairListEvaluation: one footprint per frame, or none, is needed");
+  }
   std::map<long, size_t> index_of, slot_of;
   for (size_t i = 0; i < numbers.size(); ++i) index_of[numbers[i]] = i;
   std::vector<size_t> needed;
   PairListRun run = planPairs(pairs, index_of, &needed, &slot_of);
-  const auto frames = describeNeeded(needed, [&nodes](size_t i) { return nodes[i]; }, config, options.threads);
+  const FrameOf frame_of = [&nodes, &footprints](size_t i) {
+    return std::make_pair(nodes[i], footprints.empty() ? Footprint{} : footprints[i]);
+  };
+  const auto frames = describeNeeded(needed, frame_of, config, options.threads);
   scorePairs(run, frames, slot_of, truth, config, options);
   return run;
 }

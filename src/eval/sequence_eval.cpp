@@ -30,7 +30,7 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
     rec.num_nodes = r.num_nodes;
     rec.timing = r.timing;
     rec.load_ms = loaded.load_ms;
-    rec.db_bytes = detector.database().totalBytes();
+    rec.db_bytes = detector.database().totalBytes() + detector.footprintBytes();
     rec.queried = static_cast<int>(i) >= config.retrieval.warmup_frames && static_cast<long>(i) - gap >= 0;
     if (rec.queried) {
       for (long j = 0; j <= static_cast<long>(i) - gap && !rec.has_revisit; ++j) {
@@ -42,6 +42,11 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
       rec.candidates.push_back(CandidateRecord{f, c.match.score_t, c.match.score_c, truth.distance(rec.frame, f),
                                                c.distance2, c.match.rejection,
                                                c.match.T_match_query.topRightCorner<3, 1>().norm(), c.retrieved});
+      CandidateRecord& added = rec.candidates.back();
+      for (const NodeMatch& a : c.match.associations) added.associations += a.guided ? 0 : 1;
+      added.inliers = static_cast<int>(c.match.inliers.size());
+      added.match_nodes = static_cast<int>(detector.database().nodes(c.frame).size());
+      added.footprint_share = c.match.footprint.compared > 0 ? c.match.footprint.share : -1.0;
     }
     rec.best = r.best;
     rec.is_loop = r.is_loop;

@@ -380,6 +380,14 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                      [](Config& c) -> double& { return c.verification.offset_decay_start; }));
   f.push_back(number("verification.offset_decay_end", "... to 0 at this offset (m); 0 = no decay",
                      [](Config& c) -> double& { return c.verification.offset_decay_end; }));
+  f.push_back(number("verification.min_footprint_overlap",
+                     "reject a verified candidate whose pose puts less than this share of the query's structure "
+                     "cells on the match's; 0 = off",
+                     [](Config& c) -> double& { return c.verification.min_footprint_overlap; }));
+  f.push_back(number("verification.footprint_cell", "side of a footprint cell (m)",
+                     [](Config& c) -> double& { return c.verification.footprint_cell; }));
+  f.push_back(number("verification.footprint_radius", "footprints reach this far from the sensor (m)",
+                     [](Config& c) -> double& { return c.verification.footprint_radius; }));
   f.push_back(integer<uint32_t>("verification.seed", "RANSAC seed (std::mt19937)",
                                 [](Config& c) -> uint32_t& { return c.verification.seed; }));
   addRegistrationFields(makers);

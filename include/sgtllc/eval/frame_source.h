@@ -22,6 +22,7 @@ struct LoadedFrame {
   double load_ms = 0.0;        ///< reading files
   double extraction_ms = 0.0;  ///< points → nodes (0 for node files)
   RegistrationClouds clouds;   ///< for registration.online (scans only; empty otherwise)
+  Footprint footprint;         ///< for the footprint check (scans only; empty otherwise)
   double clouds_ms = 0.0;      ///< making them
   double accumulate_ms = 0.0;  ///< merging the previous scans in (FrameSource::accumulate; 0 otherwise)
   size_t buffer_bytes = 0;     ///< memory of the accumulation buffer after this frame (ScanAccumulator::bytes)

@@ -48,10 +48,12 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
                                   const GroundTruth& truth, const Config& config, const EvalOptions& options);
 /// The same on frames already reduced to nodes, e.g. those an online run stored (`sgtllc eval` scores a
 /// sequence's loop_pairs.txt this way without reading the scans again): @p nodes[i] are the nodes of frame number
-/// @p numbers[i]. Throws sgtllc::Error if the two differ in length.
+/// @p numbers[i], with @p footprints[i] for the footprint check (LoopDetector::footprints; none: not checked).
+/// Throws sgtllc::Error if they differ in length.
 PairListRun runPairListEvaluation(const std::vector<long>& numbers, const std::vector<std::vector<Node>>& nodes,
                                   const std::vector<LoopPairLabel>& pairs, const GroundTruth& truth,
-                                  const Config& config, const EvalOptions& options);
+                                  const Config& config, const EvalOptions& options,
+                                  const std::vector<Footprint>& footprints = {});
 
 struct PairListMetrics {
   CurveMetrics curve;     ///< over the available pairs, labels as given

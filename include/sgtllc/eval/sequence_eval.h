@@ -43,6 +43,10 @@ struct CandidateRecord {
   Rejection rejection = Rejection::kFewAssociations;
   double estimated_distance = 0.0;  ///< ‖t(T_match_query)‖, the verified pose's offset (m); 0 unless verified
   bool retrieved = true;  ///< false: a neighbour of the top-1 (Candidate::retrieved), not in the pairwise protocol
+  int associations = 0;   ///< |LA|, the associated node pairs before RANSAC (algorithm §7.1)
+  int inliers = 0;        ///< verified node pairs (RANSAC's or guided matching's; algorithm §7.2)
+  int match_nodes = 0;    ///< the candidate's node count (the overlap score divides by the larger graph)
+  double footprint_share = -1.0;  ///< MatchResult::footprint share; −1 where the check did not run
 };
 
 /// Everything measured for one frame.

@@ -1,0 +1,46 @@
+/// @file footprint.h
+/// @brief A frame's footprint: the horizontal cells its structure occupies, and how well two footprints overlap
+///        under a verified pose (docs/algorithm.md §7.6).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sgtllc/config.h"
+#include "sgtllc/labels.h"
+#include "sgtllc/types.h"
+
+namespace sgtllc {
+
+/// The cells of a square grid (side VerificationConfig::footprint_cell, centred on the sensor, reaching
+/// footprint_radius) that hold at least one point of a stable class other than terrain: walls, fences, vegetation,
+/// trunks, poles and signs seen from above. A few nodes can agree by chance where two places have similar
+/// objects; the structure around them rarely does. 3,200 bytes at the defaults (160 × 160 cells of 0.5 m).
+struct Footprint {
+  float cell = 0.0f;           ///< cell side (m)
+  int half = 0;                ///< the grid has 2·half cells a side; cell (i, j) covers [(i − half)·cell, …)
+  std::vector<uint64_t> bits;  ///< row-major occupancy, (2·half)² bits; empty: no footprint (node input, maps)
+
+  bool empty() const { return bits.empty(); }
+  bool occupied(int i, int j) const;
+  size_t bytes() const { return bits.size() * sizeof(uint64_t); }
+};
+
+/// The footprint of a labelled scan (points in the sensor frame, ids read through @p labels); empty when
+/// verification.min_footprint_overlap is 0. A pure function of its inputs.
+Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, const VerificationConfig& config);
+
+/// How two footprints agree under a pose.
+struct FootprintOverlap {
+  int compared = 0;    ///< occupied query cells that land well inside the match's grid (within 0.8 of its radius)
+  double share = 0.0;  ///< of those, the share that land on or next to an occupied match cell; 0 if none
+};
+
+/// Moves the centre of every occupied cell of @p query by @p T_match_query (p_match = T · p_query, the query's
+/// cell centres taken at the sensor's height) and counts those that fall on an occupied cell of @p match or one of
+/// its eight neighbours (one cell of slack for the pose error and the grid's phase). Both must have one grid.
+FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match, const Eigen::Matrix4d& T_match_query);
+
+}  // namespace sgtllc

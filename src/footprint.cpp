@@ -1,0 +1,70 @@
+#include "sgtllc/footprint.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sgtllc {
+
+bool Footprint::occupied(int i, int j) const {
+  const int side = 2 * half;
+  if (i < 0 || j < 0 || i >= side || j >= side) return false;
+  const size_t k = static_cast<size_t>(i) * static_cast<size_t>(side) + static_cast<size_t>(j);
+  return (bits[k >> 6] >> (k & 63u)) & 1u;
+}
+
+Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, const VerificationConfig& config) {
+  Footprint f;
+  if (config.min_footprint_overlap <= 0.0) return f;
+  f.cell = static_cast<float>(config.footprint_cell);
+  f.half = static_cast<int>(std::ceil(config.footprint_radius / config.footprint_cell));
+  const int side = 2 * f.half;
+  f.bits.assign((static_cast<size_t>(side) * static_cast<size_t>(side) + 63) / 64, 0);
+  const float r2 = static_cast<float>(config.footprint_radius * config.footprint_radius);
+  const size_t n = std::min(cloud.points.size(), cloud.labels.size());
+  for (size_t p = 0; p < n; ++p) {
+    const int c = labels.classOf(cloud.labels[p]);
+    // Terrain is ground: its cells say only that there is ground, which two different streets share.
+    if (c < 0 || c == kTerrain) continue;
+    const Eigen::Vector3f& q = cloud.points[p];
+    if (!(q.x() * q.x() + q.y() * q.y() < r2)) continue;  // also drops NaN
+    const int i = static_cast<int>(std::floor(q.x() / f.cell)) + f.half;
+    const int j = static_cast<int>(std::floor(q.y() / f.cell)) + f.half;
+    if (i < 0 || j < 0 || i >= side || j >= side) continue;
+    const size_t k = static_cast<size_t>(i) * static_cast<size_t>(side) + static_cast<size_t>(j);
+    f.bits[k >> 6] |= uint64_t{1} << (k & 63u);
+  }
+  return f;
+}
+
+FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match, const Eigen::Matrix4d& T_match_query) {
+  FootprintOverlap o;
+  if (query.empty() || match.empty() || query.half != match.half || query.cell != match.cell) return o;
+  const int side = 2 * query.half;
+  const double cell = query.cell;
+  const double reach = 0.8 * query.half * cell;  // away from the match grid's edge, where its sensor saw little
+  const Eigen::Matrix3d R = T_match_query.topLeftCorner<3, 3>();
+  const Eigen::Vector3d t = T_match_query.topRightCorner<3, 1>();
+  int hits = 0;
+  // Set bits only, word by word, lowest first: a footprint is mostly empty.
+  for (size_t w = 0; w < query.bits.size(); ++w) {
+    for (uint64_t word = query.bits[w]; word != 0; word &= word - 1) {
+      const size_t k = w * 64 + static_cast<size_t>(__builtin_ctzll(word));
+      const int i = static_cast<int>(k / static_cast<size_t>(side)), j = static_cast<int>(k % static_cast<size_t>(side));
+      const Eigen::Vector3d p((i - query.half + 0.5) * cell, (j - query.half + 0.5) * cell, 0.0);
+      const Eigen::Vector3d m = R * p + t;
+      if (m.head<2>().norm() > reach) continue;
+      ++o.compared;
+      const int mi = static_cast<int>(std::floor(m.x() / cell)) + match.half;
+      const int mj = static_cast<int>(std::floor(m.y() / cell)) + match.half;
+      bool hit = false;
+      for (int di = -1; di <= 1 && !hit; ++di) {
+        for (int dj = -1; dj <= 1 && !hit; ++dj) hit = match.occupied(mi + di, mj + dj);
+      }
+      hits += hit ? 1 : 0;
+    }
+  }
+  o.share = o.compared > 0 ? static_cast<double>(hits) / o.compared : 0.0;
+  return o;
+}
+
+}  // namespace sgtllc
