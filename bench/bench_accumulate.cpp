@@ -1,4 +1,4 @@
-// Scan accumulation (issue 14): the cost per frame of merging the N − 1 previous scans into the new one, for
+// Scan accumulation (BENCHMARKS.md, "Accumulating solid-state scans"): the cost per frame of merging the N − 1 previous scans into the new one, for
 // Mid-70-sized scans (~7,000 points in the simulator, 10,000 at most). The data do not matter, only the counts.
 // Run: build/bench/sgtllc_bench_accumulate  (figures and machine in BENCHMARKS.md).
 #include <benchmark/benchmark.h>

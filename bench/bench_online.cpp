@@ -1,7 +1,7 @@
 // Online latency: LoopDetector::process on each scan of a sequence in turn, as a robot calls it, with every worker
 // thread on the one frame (`sgtllc eval` instead extracts several frames at once, one thread each, for throughput).
 // Reading is not timed. Prints the median and p99 of the frame (extraction + description + retrieval +
-// verification) and each stage's median. Written against the API of 109eb7b too, so that the baseline
+// verification) and each stage's median. Written against the API of the speed baseline too, so that the baseline
 // can be timed by the same source (BENCHMARKS.md "Time per frame").
 //
 // Run: build/bench/sgtllc_bench_online SEQ [THREADS] [FRAMES]

@@ -1,4 +1,4 @@
-// Retrieval at scale (issue 10, algorithm §5 "Retrieval at scale"): a database of N frames made from the bundled
+// Retrieval at scale (algorithm §5 "Retrieval at scale"): a database of N frames made from the bundled
 // real scans' node sets (tests/test_places_support.h: crops of real frames, five jittered visits each), searched
 // with retrieval.method ivf against the exact scan. Prints build time, peak memory, the inverted file's size, and
 // per-query time (median, p99; one thread) and the share of the exact top-15 found, for each probe count.

@@ -1,7 +1,7 @@
 # Sanitizer and fuzzing builds (README "Reliability checks"; `make test-sanitize`, `make test-tsan`, `make fuzz`).
 # Both apply to every target of the project, so the library, the tests and the command-line tool the tests run
-# are instrumented alike. Clang only: libFuzzer ships with clang, and a GCC -O2 ASan build does not report the
-# simulator use-after-free of issue 15, while clang at -O1 does.
+# are instrumented alike. Clang only: libFuzzer ships with clang, and a GCC -O2 ASan build missed a use-after-free
+# in the simulator that clang at -O1 reports.
 set(SGTLLC_SANITIZE "" CACHE STRING
     "Sanitizers for every target, as for -fsanitize=: address,undefined or thread (clang; empty: none)")
 option(SGTLLC_FUZZ "Build the libFuzzer harnesses of fuzz/ (clang; implies SGTLLC_SANITIZE=address,undefined)" OFF)

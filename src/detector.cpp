@@ -97,7 +97,7 @@ FrameResult LoopDetector::process(std::vector<Node> nodes) { return process(std:
 
 FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds clouds, Footprint footprint) {
   FrameResult result = processNodes(std::move(nodes), std::move(footprint), FrameResult{});
-  // Only the declared loop is refined (issue 13 item 4), against the stored cloud of its frame.
+  // Only the declared loop is refined (docs/registration.md, "Where it runs"), against the stored cloud of its frame.
   if (result.is_loop && clouds_.enabled() && !clouds.query.empty()) {
     const auto start = Clock::now();
     Candidate& loop = result.candidates[static_cast<size_t>(result.best)];

@@ -1,4 +1,4 @@
-// Scan accumulation (issue 14): hand-computed merges, the bounded buffer, the simulator's own accumulation, and
+// Scan accumulation (BENCHMARKS.md, "Accumulating solid-state scans"): hand-computed merges, the bounded buffer, the simulator's own accumulation, and
 // an accumulating FrameSource streamed at 1 and 2 threads.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// `sgtllc run --save-map`, `sgtllc localize` and `sgtllc map info` (issue 10): two sessions of one synthetic world
-// as node files, and every refusal the issue lists (another configuration, a directory, a truncated map, a query
+// `sgtllc run --save-map`, `sgtllc localize` and `sgtllc map info` (docs/map-format.md): two sessions of one synthetic world
+// as node files, and every refusal docs/map-format.md lists (another configuration, a directory, a truncated map, a query
 // session that is the map's own, an existing file without --force).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Bad input and existing output on the command line (issue 15, "Keep it checked" 3): each case exits non-zero
+// Bad input and existing output on the command line (README, "The `sgtllc` command"): each case exits non-zero
 // with a message that names the file and the problem, and leaves every input and every existing file as it was.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

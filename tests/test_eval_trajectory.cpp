@@ -150,7 +150,8 @@ TEST(TrajectoryError, CountMismatchThrows) {
 
 // KISS-ICP odometry of KITTI 00 frames 0–999 against SemanticKITTI's poses, both in the LiDAR frame (data/README.md).
 // Reference values from an independent script (Python, no numpy: Gauss-Jordan inverse of Tr, Horn's quaternion
-// alignment by power iteration); on the whole sequence the same two programs give the 3.85 m / 6.74 m.
+// alignment by power iteration); on the whole sequence the same two programs give the README's 3.85 m / 6.74 m
+// ("Closing the loop on real KITTI 00").
 TEST(TrajectoryError, RealKissIcpAgainstSemanticKittiPoses) {
   const std::string dir = sgtllc::test::dataPath("kitti/00/");
   const auto gt = sgtllc::io::readTrajectory(dir + "odometry/semantickitti_poses_first1000.txt", dir + "calib.txt");
@@ -165,16 +166,6 @@ TEST(TrajectoryError, RealKissIcpAgainstSemanticKittiPoses) {
 
 class TrajectoryPlot : public sgtllc::test::TempDirTest {};
 
-/// Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23), 0×0 if the signature is wrong.
-std::pair<int, int> pngSize(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  unsigned char h[24] = {};
-  in.read(reinterpret_cast<char*>(h), 24);
-  if (h[1] != 'P' || h[2] != 'N' || h[3] != 'G') return {0, 0};
-  const auto be = [&](int k) { return (h[k] << 24) | (h[k + 1] << 16) | (h[k + 2] << 8) | h[k + 3]; };
-  return {be(16), be(20)};
-}
-
 TEST_F(TrajectoryPlot, WritesAPngAndChecksLoopFrames) {
   sgtllc::eval::TrajectoryPlotData data;
   for (int i = 0; i < 50; ++i) {
@@ -184,13 +175,19 @@ TEST_F(TrajectoryPlot, WritesAPngAndChecksLoopFrames) {
   }
   data.corrected = data.ground_truth;
   data.loops = {{0, 49, true}, {5, 30, false}};
+  data.odometry_ate = {0.812, 1.004};  // legend and title figures: any values draw
+  data.corrected_ate = {0.0, 0.0};
   sgtllc::eval::plotTrajectories(path("top.png"), data);
-  EXPECT_EQ(pngSize(path("top.png")), std::make_pair(1250, 900));
+  EXPECT_EQ(sgtllc::test::pngSize(path("top.png")), std::make_pair(1400, 900));
   data.loops.push_back({0, 50, true});
   EXPECT_THAT([&] { sgtllc::eval::plotTrajectories(path("bad.png"), data); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("loop 0 -> 50 names a frame outside")));
   sgtllc::eval::plotTrajectories(path("empty.png"), sgtllc::eval::TrajectoryPlotData{});
-  EXPECT_EQ(pngSize(path("empty.png")), std::make_pair(1250, 900));
+  EXPECT_EQ(sgtllc::test::pngSize(path("empty.png")), std::make_pair(1400, 900));
+  // The legend gives the ATE the report's table gives, after alignment and as drawn.
+  EXPECT_EQ(sgtllc::eval::ateLabel("odometry", {3.8544, 6.7436}), "odometry: ATE 3.854 m aligned, 6.744 m as drawn");
+  EXPECT_EQ(sgtllc::eval::ateLabel("corrected", {0.777, -1.0}), "corrected: ATE 0.777 m aligned");
+  EXPECT_EQ(sgtllc::eval::ateLabel("corrected", {}), "corrected");
 }
 
 }  // namespace

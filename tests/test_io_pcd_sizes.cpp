@@ -1,5 +1,6 @@
-// PCD headers whose sizes the data cannot back (issue 15, defect 2): every declared size is checked against the
-// file and against the others before anything is allocated, so a 172-byte file that claims 4 GiB fails at once.
+// PCD headers whose sizes the data cannot back (BENCHMARKS.md, "Reliability checks"): every declared size is
+// checked against the file and against the others before anything is allocated, so a 172-byte file that claims
+// 4 GiB fails at once.
 #include <sys/resource.h>
 
 #include <cstdint>

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -56,5 +57,15 @@ class TempDirTest : public ::testing::Test {
   }
   std::filesystem::path dir_;
 };
+
+/// Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23), 0×0 if the signature is wrong.
+inline std::pair<int, int> pngSize(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char h[24] = {};
+  in.read(reinterpret_cast<char*>(h), 24);
+  if (h[1] != 'P' || h[2] != 'N' || h[3] != 'G') return {0, 0};
+  const auto be = [&](int k) { return (h[k] << 24) | (h[k + 1] << 16) | (h[k + 2] << 8) | h[k + 3]; };
+  return {be(16), be(20)};
+}
 
 }  // namespace sgtllc::test

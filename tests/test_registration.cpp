@@ -1,4 +1,4 @@
-// Fine registration (issue 13 item 4): point-to-plane ICP against known poses, the real KITTI revisit against the
+// Fine registration (docs/registration.md): point-to-plane ICP against known poses, the real KITTI revisit against the
 // ICP-refined reference, the fallbacks, the information matrix, the compact cloud and the online option.
 #include <utility>
 
@@ -106,7 +106,7 @@ TEST_F(Registration, RealRevisitAgreesWithTheIcpReference) {
   // Fitness counts the query points paired within max_correspondence (0.3 m): 0.76 here (0.91 within 1 m).
   EXPECT_GT(r.refinement->fitness, 0.7);
   EXPECT_LT(r.refinement->rmse_m, 0.1);
-  // Acceptance (issue 13): within 1.5 cm and 0.05° of the ICP-refined reference (data/README.md); the SVD pose
+  // Within 1.5 cm and 0.05° of the ICP-refined reference (data/README.md); the SVD pose
   // it started from is 2.2 cm / 0.09° away.
   const auto err = poseError(r.match.T_match_query, test::referencePose4501To52());
   EXPECT_LT(err.translation_m, 0.015);

@@ -1,5 +1,5 @@
 // The world builder's shape helpers must not keep a reference into the primitive list across a later add: a
-// reallocation frees the old storage (issue 15, defect 1: addHedge read its first box after adding the second).
+// reallocation frees the old storage (addHedge once read its first box after adding the second).
 //
 // A use-after-free usually reads the old, still intact bytes, so the bug shows only under ASan. This executable
 // replaces the global allocator with one that overwrites freed memory with 0xA5 (a float of about -2.9e-16), so

@@ -1,4 +1,4 @@
-// The robustness test of issue 8 (`sgtllc optimize --add-false-loops F --seed S`): false loops between frames far
+// The back end's robustness test (docs/backend.md, "Outlier step"; `sgtllc optimize --add-false-loops F --seed S`): false loops between frames far
 // apart, to check that the back end rejects them and that the corrected trajectory does not move.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Relocalizing every frame of a sequence in a loaded map, for `sgtllc localize` and `sgtllc eval --map`
-// (issue 10; map/relocalizer.h).
+// (docs/relocalization.md; map/relocalizer.h).
 #pragma once
 
 #include <functional>

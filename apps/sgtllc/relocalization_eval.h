@@ -1,4 +1,4 @@
-// `sgtllc eval S2 --map MAP`: the relocalization protocol (docs/relocalization.md, issue 10).
+// `sgtllc eval S2 --map MAP`: the relocalization protocol (docs/relocalization.md).
 #pragma once
 
 #include <optional>

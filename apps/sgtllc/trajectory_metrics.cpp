@@ -94,6 +94,12 @@ void plotClosing(const std::string& path, const std::vector<Eigen::Isometry3d>& 
   data.ground_truth = ground_truth;
   data.odometry = odometry.poses;
   data.corrected = closing.poses;
+  if (!ground_truth.empty()) {
+    const eval::AteResult o = eval::absoluteTrajectoryError(ground_truth, odometry.poses);
+    const eval::AteResult c = eval::absoluteTrajectoryError(ground_truth, closing.poses);
+    data.odometry_ate = {o.aligned.rmse, o.unaligned.rmse};
+    data.corrected_ate = {c.aligned.rmse, c.unaligned.rmse};
+  }
   for (size_t k = 0; k < loops.size(); ++k) {
     data.loops.push_back({loops[k].edge.from, loops[k].edge.to,
                           closing.result.loops.at(k).decision == backend::LoopDecision::kAccepted});

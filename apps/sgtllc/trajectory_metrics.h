@@ -1,4 +1,4 @@
-// Trajectory errors of the odometry and the corrected trajectory against ground truth (issue 8), as text, JSON
+// Trajectory errors of the odometry and the corrected trajectory against ground truth (docs/backend.md), as text, JSON
 // and a report section, and the top-view plot with the loop edges.
 #pragma once
 

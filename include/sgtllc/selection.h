@@ -1,5 +1,5 @@
 /// @file selection.h
-/// @brief Which verified candidate a query reports (algorithm §7.4, and issue 13 item 3): the highest score_t, or the
+/// @brief Which verified candidate a query reports (algorithm §7.4; BENCHMARKS.md, "Top-1 choice"): the highest score_t, or the
 ///        geometrically closest one among those scoring nearly as well.
 #pragma once
 

@@ -39,7 +39,7 @@ LabeledCloud mergeScans(const std::vector<const LabeledCloud*>& scans,
   out.labels.reserve(total);
   const size_t newest = scans.size() - 1;
   // The general 4×4 inverse, as Simulator::merge uses, so a drive accumulated here from its poses matches the
-  // simulator's own accumulation point for point (issue 14's acceptance test).
+  // simulator's own accumulation point for point (tests/test_accumulate.cpp compares the two).
   const Eigen::Matrix4d newest_world = T_world_scan[newest].matrix().inverse();
   for (size_t k = 0; k < scans.size(); ++k) {
     const LabeledCloud& s = *scans[k];

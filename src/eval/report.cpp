@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "report_plots.h"
+#include "timing_plot.h"
 #include "sgtllc/eval/metric_text.h"
 #include "sgtllc/io/csv.h"
 

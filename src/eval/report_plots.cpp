@@ -1,6 +1,8 @@
 #include "report_plots.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -21,16 +23,20 @@ void addCurve(plot::Figure& fig, const PrCurve& c, const std::string& label, plo
   fig.line(steps.recall, steps.precision, label, color, width, dashed);
 }
 
-/// The PR axes: full range, or zoomed on precision 0.9–1 where the curves of a good detector differ.
+/// The PR axes: full range, or zoomed on the knee of the curves (prZoom).
 plot::Figure prFigure(const std::vector<CurveMetrics>& pairwise, const CurveMetrics* top1, const std::string& title,
                       bool zoom) {
+  std::vector<const PrCurve*> curves;
+  for (const CurveMetrics& c : pairwise) curves.push_back(&c.curve);
+  if (top1) curves.push_back(&top1->curve);
+  const PrZoom z = zoom ? prZoom(curves) : PrZoom{};
   plot::Figure fig(zoom ? 620 : 900, 700);
-  fig.title(zoom ? "Zoom: precision 0.9-1" : title);
+  fig.title(zoom ? format("Zoom: recall %g-1, precision %g-1", z.recall_lo, z.precision_lo) : title);
   fig.xlabel("recall");
   fig.ylabel("precision");
-  fig.xlim(0.0, 1.02);  // a curve at recall 1 stays off the frame
-  if (zoom) fig.ylim(0.9, 1.005);
-  else fig.ylim(0.0, 1.02);
+  // A curve at recall or precision 1 stays off the frame.
+  fig.xlim(z.recall_lo, 1.0 + 0.02 * (1.0 - z.recall_lo));
+  fig.ylim(z.precision_lo, 1.0 + 0.02 * (1.0 - z.precision_lo));
   fig.legendAt("lower left");
   bool any = false;
   for (size_t k = 0; k < pairwise.size(); ++k) {
@@ -50,6 +56,12 @@ plot::Figure prFigure(const std::vector<CurveMetrics>& pairwise, const CurveMetr
   return fig;
 }
 
+/// @p x > 0 rounded up to one significant digit (0.16 → 0.2, 0.03 → 0.03), so the zoom's axis ends on a tick.
+double ceilOneDigit(double x) {
+  const double mag = std::pow(10.0, std::floor(std::log10(x)));
+  return std::ceil(x / mag - 1e-9) * mag;
+}
+
 }  // namespace
 
 PrSteps prSteps(const PrCurve& c) {
@@ -67,35 +79,35 @@ PrSteps prSteps(const PrCurve& c) {
   return s;
 }
 
+PrZoom prZoom(const std::vector<const PrCurve*>& curves) {
+  double gap_recall = 0.0, gap_precision = 0.0;
+  bool any = false;
+  for (const PrCurve* c : curves) {
+    if (!c || c->positives <= 0) continue;
+    // The curve's F1max point (f1Max's value; of equal ones the first, at the highest threshold).
+    double best = -1.0, r = 0.0, p = 0.0;
+    for (size_t k = 0; k < c->recall.size(); ++k) {
+      const double sum = c->precision[k] + c->recall[k];
+      const double f1 = sum > 0.0 ? 2.0 * c->precision[k] * c->recall[k] / sum : 0.0;
+      if (f1 > best) {
+        best = f1;
+        r = c->recall[k];
+        p = c->precision[k];
+      }
+    }
+    any = true;
+    gap_recall = std::max(gap_recall, 1.0 - r);
+    gap_precision = std::max(gap_precision, 1.0 - p);
+  }
+  if (!any) return {};
+  const auto lower = [](double gap) { return std::max(0.0, 1.0 - std::min(1.0, ceilOneDigit(std::max(0.02, 2.0 * gap)))); };
+  return {lower(gap_recall), lower(gap_precision)};
+}
+
 void plotPrCurves(const std::string& path, const std::vector<CurveMetrics>& pairwise, const CurveMetrics* top1,
                   const std::string& title) {
   const plot::Figure full = prFigure(pairwise, top1, title, false), zoom = prFigure(pairwise, top1, title, true);
   plot::savePngRow(path, {&full, &zoom});
-}
-
-void plotTiming(const std::string& path, const SequenceRun& run) {
-  std::vector<double> x, extraction, description, retrieval, verification, total;
-  for (size_t i = 0; i < run.frames.size(); ++i) {
-    const StageTimes& t = run.frames[i].timing;
-    x.push_back(static_cast<double>(i));
-    extraction.push_back(t.extraction_ms);
-    description.push_back(t.description_ms);
-    retrieval.push_back(t.retrieval_ms);
-    verification.push_back(t.verification_ms);
-    total.push_back(t.total_ms());
-  }
-  plot::Figure fig(1200, 600);
-  fig.title("Time per frame and stage (reading files excluded)");
-  fig.xlabel("frame");
-  fig.ylabel("milliseconds");
-  fig.legendAt("outside right");
-  if (run.frames.empty()) fig.note("no frames");
-  fig.line(x, total, "total", plot::Color{0.1, 0.1, 0.1}, 1.2);
-  fig.line(x, extraction, "node extraction", plot::seriesColor(0), 1.0);
-  fig.line(x, verification, "verification (15 candidates)", plot::seriesColor(1), 1.0);
-  fig.line(x, retrieval, "retrieval", plot::seriesColor(2), 1.0);
-  fig.line(x, description, "graph + descriptors", plot::seriesColor(3), 1.0);
-  fig.savePng(path);
 }
 
 void plotMemory(const std::string& path, const SequenceRun& run) {
@@ -149,15 +161,17 @@ void plotTrajectory(const std::string& path, const SequenceRun& run, const EvalO
   fig.ylabel("y (m)");
   fig.equalAspect();
   fig.legendAt("outside right");
-  // Drawn in this order, so the loops lie above the path and the missed revisits.
+  // Drawn in this order: the loops above the path, and the missed revisits above the loops (a true loop's dot
+  // covers a metre of path, so the few misses among them would vanish underneath), outlined to stand out.
   fig.line(x, y, "trajectory", plot::Color{0.7, 0.7, 0.7}, 1.5);
-  fig.points(miss_x, miss_y, counted("revisit missed", miss_x.size()), plot::Color{0.95, 0.6, 0.0}, 2.5);
+  fig.segments(good, "", plot::Color{0.0, 0.55, 0.15}, 2.0);
+  fig.points(true_x, true_y, counted("true loop (< " + pos + " m)", true_x.size()), plot::Color{0.0, 0.55, 0.15},
+             3.0);
   fig.segments(between, counted("loop " + pos + "-" + neg + " m apart (not scored)", between.size()),
                plot::Color{0.3, 0.4, 0.9}, 2.0);
   fig.segments(bad, counted("false loop (> " + neg + " m)", bad.size()), plot::Color{0.9, 0.0, 0.0}, 2.0);
-  fig.segments(good, "", plot::Color{0.0, 0.55, 0.15}, 2.0);
-  fig.points(true_x, true_y, counted("true loop (< " + pos + " m)", true_x.size()), plot::Color{0.0, 0.55, 0.15},
-             3.5);
+  fig.points(miss_x, miss_y, "", plot::Color{0.0, 0.0, 0.0}, 6.5);
+  fig.points(miss_x, miss_y, counted("revisit missed", miss_x.size()), plot::Color{1.0, 0.55, 0.0}, 4.5);
   if (!x.empty()) fig.points({x.front()}, {y.front()}, "start", plot::Color{0.0, 0.0, 0.0}, 6.0);
   if (x.empty()) fig.note("no frames");
   fig.savePng(path);

@@ -2,6 +2,7 @@
 #include "sgtllc/eval/trajectory_plot.h"
 
 #include <array>
+#include <cstdio>
 
 #include "figure.h"
 #include "sgtllc/types.h"
@@ -30,7 +31,20 @@ void addTrajectory(plot::Figure& fig, const std::vector<Eigen::Isometry3d>& pose
   fig.line(x, y, label, color, width, dashed);
 }
 
+std::string ateText(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.3f m", v);
+  return buf;
+}
+
 }  // namespace
+
+std::string ateLabel(const std::string& name, const PlotAte& ate) {
+  if (ate.aligned < 0.0) return name;
+  std::string label = name + ": ATE " + ateText(ate.aligned) + " aligned";
+  if (ate.unaligned >= 0.0) label += ", " + ateText(ate.unaligned) + " as drawn";
+  return label;
+}
 
 void plotTrajectories(const std::string& path, const TrajectoryPlotData& data) {
   const std::vector<Eigen::Isometry3d>& anchor = !data.ground_truth.empty() ? data.ground_truth
@@ -48,15 +62,24 @@ void plotTrajectories(const std::string& path, const TrajectoryPlotData& data) {
     (l.accepted ? accepted : rejected).push_back({a[0], a[1], b[0], b[1]});
   }
 
-  plot::Figure fig(1250, 900);
-  fig.title(data.title);
+  plot::Figure fig(1400, 900);  // wide enough for the ATE legend beside a square map
+  std::string title = data.title;
+  if (data.odometry_ate.aligned >= 0.0 && data.corrected_ate.aligned >= 0.0 && !data.odometry.empty() &&
+      !data.corrected.empty()) {
+    title += ": aligned ATE " + ateText(data.odometry_ate.aligned) + " \u2192 " + ateText(data.corrected_ate.aligned);
+  }
+  fig.title(title);
   fig.legendAt("outside right");  // beside the axes: never over a trajectory
   fig.xlabel("x (m)");
   fig.ylabel(data.cam0_axes ? "z (m)" : "y (m)");
   fig.equalAspect();
-  addTrajectory(fig, data.ground_truth, data.cam0_axes, "ground truth", plot::Color{0.55, 0.55, 0.55}, 3.0, false);
-  addTrajectory(fig, data.odometry, data.cam0_axes, "odometry", plot::Color{0.90, 0.55, 0.0}, 1.5, true);
-  addTrajectory(fig, data.corrected, data.cam0_axes, "corrected", plot::Color{0.0, 0.45, 0.70}, 1.5, false);
+  // The ground truth first and wide, in a light colour none of the others uses: a corrected trajectory within a metre
+  // of it runs inside the band instead of covering it.
+  addTrajectory(fig, data.ground_truth, data.cam0_axes, "ground truth", plot::Color{0.70, 0.70, 0.70}, 8.0, false);
+  addTrajectory(fig, data.odometry, data.cam0_axes, ateLabel("odometry", data.odometry_ate),
+                plot::Color{0.90, 0.55, 0.0}, 1.5, true);
+  addTrajectory(fig, data.corrected, data.cam0_axes, ateLabel("corrected", data.corrected_ate),
+                plot::Color{0.0, 0.35, 0.75}, 1.5, false);
   if (!accepted.empty()) {
     fig.segments(accepted, "accepted loop (" + std::to_string(accepted.size()) + ")", plot::Color{0.0, 0.65, 0.2},
                  1.5);

@@ -3,7 +3,7 @@
 ///
 /// Verification needs each candidate's graph and local descriptors (describeFrame), which the database does not
 /// keep (database.h: ~2 KB of nodes per frame instead of ~25 KB). Consecutive queries retrieve largely the same
-/// frames, so re-describing all K candidates per query (issue 13 item 5) mostly repeats work: this keeps the
+/// frames, so re-describing all K candidates per query mostly repeats work: this keeps the
 /// descriptions of the most recently verified frames. describeFrame is a pure function of the nodes and the
 /// configuration, so a cached description is the one a fresh describeFrame would give and results do not change.
 #pragma once

@@ -1,4 +1,4 @@
-// Point-to-plane ICP seeded by the object-level SVD pose (issue 13 item 4; docs/registration.md).
+// Point-to-plane ICP seeded by the object-level SVD pose (docs/registration.md).
 //
 // Gauss-Newton on the point-to-plane residuals r_i = n_iᵀ (R p_i + t − q_i) over a right perturbation
 // T ← T · Exp(δ), δ = (δt, δθ): the tangent space of backend::Edge, so the normal matrix at the final pose is

@@ -34,7 +34,7 @@ class WorldBuilder {
 
   uint32_t addObject(ObjectKind kind);
   /// Appends a finished primitive. It returns nothing on purpose: a reference into `prims` would dangle after the
-  /// next add reallocates the list (issue 15), so helpers set every field before adding.
+  /// next add reallocates the list, so helpers set every field before adding.
   void add(const Primitive& p) { prims.push_back(p); }
   double groundZ(const Eigen::Vector2d& xy) const { return world.ground.height(xy.x(), xy.y()); }
   /// Lowest ground under the corners and centre of a footprint: boxes start below it so slopes leave no gap.

@@ -1,5 +1,5 @@
 /// @file backend_config.h
-/// @brief Settings of the pose-graph back end (issue 8): odometry noise, loop information, outlier step, solver.
+/// @brief Settings of the pose-graph back end (docs/backend.md): odometry noise, loop information, outlier step, solver.
 ///
 /// YAML keys mirror the fields under `backend.` (`backend.odometry.translation_sigma_per_m`, …). The model behind
 /// each group is described in docs/backend.md.

@@ -1,5 +1,5 @@
 /// @file information.h
-/// @brief Information matrices of odometry and loop edges (issue 8; model in docs/backend.md).
+/// @brief Information matrices of odometry and loop edges (model in docs/backend.md).
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 /// @file pose_graph_optimizer.h
-/// @brief Pose-graph optimisation with an explicit outlier step, batch and online (issue 8; docs/backend.md).
+/// @brief Pose-graph optimisation with an explicit outlier step, batch and online (docs/backend.md).
 ///
 /// Every optimize() does the same three steps on all loops received so far, so the online result after the
 /// last loop equals the batch result up to the solver tolerance (only the starting point differs):

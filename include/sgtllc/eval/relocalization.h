@@ -21,7 +21,7 @@ struct RelocalizationQuery {
   Eigen::Isometry3d T_mapframe_query = Eigen::Isometry3d::Identity();
 };
 
-/// The protocol's thresholds (docs/relocalization.md; the issue-10 protocol's values are the defaults).
+/// The protocol's thresholds; its defaults are the values of docs/relocalization.md, "The protocol".
 struct RelocalizationProtocol {
   double positive_distance = 3.0;   ///< m: a query with a map frame at or within this is a positive, and a
                                     ///< returned map frame at or within this is correct

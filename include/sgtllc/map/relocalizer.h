@@ -1,5 +1,5 @@
 /// @file relocalizer.h
-/// @brief Where is this frame in a prior map? A query against a loaded map without insertion (issue 10 item 2).
+/// @brief Where is this frame in a prior map? A query against a loaded map without insertion (docs/relocalization.md).
 #pragma once
 
 #include <memory>

@@ -1,6 +1,6 @@
 /// @file icp.h
 /// @brief Point-to-plane ICP that refines a loop's pose, with its checks and its information matrix
-///        (issue 13 item 4; docs/registration.md).
+///        (docs/registration.md).
 #pragma once
 
 #include <vector>

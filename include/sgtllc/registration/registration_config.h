@@ -1,6 +1,6 @@
 /// @file registration_config.h
-/// @brief Settings of the fine registration that refines a loop's object-level SVD pose (issue 13 item 4;
-///        docs/registration.md).
+/// @brief Settings of the fine registration that refines a loop's object-level SVD pose
+///        (docs/registration.md).
 #pragma once
 
 #include <cstdint>
