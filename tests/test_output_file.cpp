@@ -1,13 +1,17 @@
 // How every writer creates a file (include/sgtllc/io/output_file.h): a planted symlink never redirects a save,
 // the temporary file is hidden, exclusive and of a normal file's mode, and it is removed on errors and on SIGTERM;
 // one left by SIGKILL is recognisable and no folder reader takes it for a frame.
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -230,6 +234,44 @@ TEST_F(OutputFile, TheNextSaveRemovesALeftoverButNotALiveTemporary) {
   EXPECT_EQ(readAll(path("out/keep.txt")), "k");
   EXPECT_FALSE(fs::exists(path("out/a.txt")));
   for (int fd : {ready[0], ready[1], go[0], go[1]}) ::close(fd);
+}
+
+TEST_F(OutputFile, AnEmptyNewTemporaryMayBeASaveBetweenItsCreationAndItsLock) {
+  // open(2) and flock(2) are two calls: between them a save's file is empty, new and unlocked. Such a file must
+  // survive another save's sweep of the folder; an empty one from over a minute ago is a leftover like any other.
+  write("out/keep.txt", "k");
+  const std::string fresh = write("out/.b.txt.sgtllc-tmp-Fresh0000000", "");
+  const std::string stale = write("out/.a.txt.sgtllc-tmp-Stale0000000", "");
+  const struct timespec old[2] = {{::time(nullptr) - 120, 0}, {::time(nullptr) - 120, 0}};
+  ASSERT_EQ(::utimensat(AT_FDCWD, stale.c_str(), old, 0), 0);
+  const int next = inChild([&] { io::writeFileAtomically(path("out/c.txt"), "c", io::Overwrite::kRefuse); });
+  ASSERT_TRUE(WIFEXITED(next));
+  EXPECT_EQ(WEXITSTATUS(next), 0);
+  EXPECT_TRUE(fs::exists(fresh));
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_EQ(readAll(path("out/c.txt")), "c");
+}
+
+TEST_F(OutputFile, ConcurrentSavesIntoOneFolderAllLand) {
+  // Threads of one process saving side by side (as `simulate` writes frames): the first save's sweep of the
+  // folder must never take another's just-created temporary file for a leftover.
+  fs::create_directories(dir_ / "many");
+  std::vector<std::thread> threads;
+  std::atomic<int> failures{0};
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&, t] {
+      for (int i = 0; i < 50; ++i) {
+        try {
+          io::writeFileAtomically(path("many/" + std::to_string(t * 100 + i) + ".txt"), "x", io::Overwrite::kRefuse);
+        } catch (const std::exception&) {
+          ++failures;
+        }
+      }
+    });
+  }
+  for (std::thread& th : threads) th.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_EQ(entries("many").size(), 200u);
 }
 
 TEST(OutputFileNames, OnlyTheTemporaryPatternIsRecognised) {

@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <mutex>
 #include <random>
@@ -112,6 +113,15 @@ std::string temporaryPathFor(const std::string& destination) {
   return (dest.parent_path() / ("." + name + std::string(kMarker) + randomLetters())).string();
 }
 
+/// True for a file that another save may have just created and not yet locked: open(2) and flock(2) are two
+/// calls, and between them the file is empty and new. Such a file is left for a later save to judge; a save
+/// killed before its first byte leaves nothing worth hurrying for.
+bool mayBeBeingCreated(const struct stat& st) {
+  constexpr time_t kCreationWindowSeconds = 60;
+  const time_t now = ::time(nullptr);
+  return st.st_size == 0 && st.st_mtime > now - kCreationWindowSeconds;
+}
+
 /// Removes the temporary files in @p folder that a killed save left behind (kill -9 runs no handler), once per
 /// folder and process. A live temporary file holds an exclusive flock(2) from its creation until its rename, and
 /// the kernel drops the lock when its process dies, so a temporary file whose lock can be taken is a leftover;
@@ -131,7 +141,7 @@ void removeLeftovers(const fs::path& folder) {
     const int fd = ::openat(::dirfd(d), e->d_name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) continue;
     struct stat st {};
-    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::flock(fd, LOCK_EX | LOCK_NB) == 0) {
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && !mayBeBeingCreated(st) && ::flock(fd, LOCK_EX | LOCK_NB) == 0) {
       ::unlinkat(::dirfd(d), e->d_name, 0);
     }
     ::close(fd);
@@ -150,7 +160,8 @@ TemporaryFile::TemporaryFile(const std::string& destination) : destination_(dest
     if (errno != EEXIST) fail(errno);
   }
   if (fd_ < 0) fail(EEXIST);
-  ::flock(fd_, LOCK_EX | LOCK_NB);  // a new file: nobody else can hold its lock (removeLeftovers)
+  // Before the first byte: removeLeftovers locks only files that are not empty or not new (mayBeBeingCreated).
+  ::flock(fd_, LOCK_EX);
   slot_ = listForSignals(path_);
   removeLeftovers(fs::path(destination).parent_path());
 }
