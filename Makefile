@@ -26,8 +26,12 @@ all: build
 deps:
 	@./scripts/install-deps.sh $(DEPS_FLAGS)
 
+# With ccache (install-deps.sh installs it), the module `pip install .` builds in build-pip/ (setup.py, and the
+# python_pip_install test) reuses this build's objects instead of compiling the libraries a second time.
+CCACHE_FLAG = $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+
 configure: deps
-	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) > $(BUILD).configure.log 2>&1 \
+	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CCACHE_FLAG) $(CMAKE_FLAGS) > $(BUILD).configure.log 2>&1 \
 	  || (cat $(BUILD).configure.log; exit 1)
 
 build: configure

@@ -9,8 +9,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "sgtllc/types.h"
 
@@ -66,6 +68,31 @@ inline void require(bool condition, const char* what) {
     std::fprintf(stderr, "sgtllc fuzz: invariant broken: %s\n", what);
     std::abort();
   }
+}
+
+/// The checks of a point-cloud reader pair (PCD, PLY): @p with_labels reads points and labels, @p points_only the
+/// points. As many labels as points; the points-only read needs a subset of the fields, so where the labelled
+/// read succeeds it must too, with the same points to the bit (NaN coordinates are kept); no more points than
+/// input bytes.
+template <typename WithLabels, typename PointsOnly>
+void checkCloudReaders(size_t size, WithLabels with_labels, PointsOnly points_only) {
+  std::vector<Eigen::Vector3f> labelled;
+  const bool read_labelled = readsOrRejects([&] {
+    const LabeledCloud cloud = with_labels();
+    require(cloud.points.size() == cloud.labels.size(), "as many labels as points");
+    labelled = cloud.points;
+  });
+  const bool read_points = readsOrRejects([&] {
+    const std::vector<Eigen::Vector3f> points = points_only();
+    require(points.size() <= size, "no more points than input bytes");
+    if (read_labelled) {
+      require(points.size() == labelled.size() &&
+                  (points.empty() ||
+                   std::memcmp(points.data(), labelled.data(), points.size() * sizeof(Eigen::Vector3f)) == 0),
+              "the points-only read gives the labelled read's points");
+    }
+  });
+  require(!read_labelled || read_points, "a file read with labels is read without them too");
 }
 
 }  // namespace sgtllc::fuzz

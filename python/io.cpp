@@ -11,6 +11,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
+#include "sgtllc/io/ply_read.h"
 #include "sgtllc/io/sequence.h"
 #include "sgtllc/io/trajectory.h"
 
@@ -70,6 +71,31 @@ py::array_t<double> readPoses(const std::string& path, const std::optional<std::
   return posesToArray(read.trajectory.poses);
 }
 
+/// read_FORMAT(path, label_field="label") and read_FORMAT_points(path) over a point-cloud reader pair (PCD, PLY).
+void bindCloudReaders(py::module_& m, const std::string& format,
+                      LabeledCloud (*with_labels)(const std::string&, const std::string&),
+                      std::vector<Eigen::Vector3f> (*points_only)(const std::string&), const std::string& doc,
+                      const std::string& points_doc) {
+  m.def(("read_" + format).c_str(),
+        [with_labels](const std::string& path, const std::string& label_field) {
+          requireFile(path);
+          return readCloud([&] { return with_labels(path, label_field); });
+        },
+        py::arg("path"), py::arg("label_field") = "label",
+        (doc + "Returns (points (N, 3) float32, labels (N,) uint32).").c_str());
+  m.def(("read_" + format + "_points").c_str(),
+        [points_only](const std::string& path) {
+          requireFile(path);
+          std::vector<Eigen::Vector3f> points;
+          {
+            py::gil_scoped_release release;
+            points = points_only(path);
+          }
+          return pointsToArray(std::move(points));
+        },
+        py::arg("path"), (points_doc + "Returns points (N, 3) float32.").c_str());
+}
+
 /// Raises IndexError unless frame @p i is one of @p s's.
 size_t frameIndex(const io::SequenceDir& s, py::ssize_t i) {
   const auto n = static_cast<py::ssize_t>(s.size());
@@ -119,27 +145,12 @@ void bindIo(py::module_& m) {
         "Reads a scan and its labels (default: default_label_path; uint32 or one byte a point, see read_labels)\n"
         "and checks that there is one label a point.\n"
         "Returns (points (N, 3) float32, labels (N,) uint32).");
-  m.def("read_pcd",
-        [](const std::string& path, const std::string& label_field) {
-          requireFile(path);
-          return readCloud([&] { return io::readPcd(path, label_field); });
-        },
-        py::arg("path"), py::arg("label_field") = "label",
-        "Reads x, y, z and a label field of a PCD file (ascii, binary or binary_compressed).\n"
-        "Returns (points (N, 3) float32, labels (N,) uint32).");
-  m.def("read_pcd_points",
-        [](const std::string& path) {
-          requireFile(path);
-          std::vector<Eigen::Vector3f> points;
-          {
-            py::gil_scoped_release release;
-            points = io::readPcdPoints(path);
-          }
-          return pointsToArray(std::move(points));
-        },
-        py::arg("path"),
-        "Reads x, y, z of a PCD file, with or without a label field (a raw scan for label_scan).\n"
-        "Returns points (N, 3) float32.");
+  bindCloudReaders(m, "pcd", &io::readPcd, &io::readPcdPoints,
+                   "Reads x, y, z and a label field of a PCD file (ascii, binary or binary_compressed).\n",
+                   "Reads x, y, z of a PCD file, with or without a label field (a raw scan for label_scan).\n");
+  bindCloudReaders(m, "ply", &io::readPly, &io::readPlyPoints,
+                   "Reads x, y, z and a label property of a PLY file's vertex element (ascii or binary).\n",
+                   "Reads x, y, z of a PLY file's vertex element, with or without a label property.\n");
   m.def("read_poses", &readPoses, py::arg("path"), py::arg("calib") = py::none(), py::arg("pose_frame") = "auto",
         "Reads a trajectory, KITTI (12 columns) or TUM (8 columns), as (N, 4, 4) LiDAR-frame poses T_world_frame.\n"
         "The command line's rule and messages (--calib is calib=, --pose-frame is pose_frame=): a KITTI file goes\n"
@@ -179,15 +190,35 @@ void bindIo(py::module_& m) {
         "Writes a node file that read_nodes reads back exactly. An existing file raises unless overwrite=True.");
 
   py::class_<io::SequenceDir>(m, "SequenceDir",
-                              "A SemanticKITTI-layout sequence: DIR/velodyne/NAME.bin with DIR/labels/NAME.label.")
-      .def(py::init<const std::string&>(), py::arg("dir"),
-           "Lists the scans in file-name order; raises sgtllc.Error if velodyne/ is missing or a label is.")
+                              "A sequence folder: DIR/velodyne/NAME.bin (SemanticKITTI), or .bin, .pcd or .ply scans in\n"
+                              "DIR itself (one format, name order), with labels from labels_dir/NAME.label, a PCD/PLY\n"
+                              "'label' field, or DIR/labels/NAME.label (the command line's SEQ_DIR).")
+      .def(py::init([](const std::string& dir, const std::string& labels_dir, bool read_labels, LabelFormat format) {
+             if (!read_labels && !labels_dir.empty()) throw Error("labels_dir and read_labels=False exclude each other");
+             return io::SequenceDir(dir, io::SequenceLabels{read_labels, labels_dir, format});
+           }),
+           py::arg("dir"), py::arg("labels_dir") = "", py::arg("read_labels") = true,
+           py::arg("format") = LabelFormat::kAuto,
+           "Lists the scans in file-name order; raises sgtllc.Error if there are none, the folder mixes formats,\n"
+           "or a label file is missing. read_labels=False reads the scans alone (load gives no labels).")
       .def("__len__", &io::SequenceDir::size, "number of scans")
       .def_property_readonly("dir", &io::SequenceDir::dir, "the folder as given")
-      .def("bin_path", [](const io::SequenceDir& s, py::ssize_t i) { return s.binPath(frameIndex(s, i)); },
-           py::arg("i"), "DIR/velodyne/NAME.bin of frame i")
-      .def("label_path", [](const io::SequenceDir& s, py::ssize_t i) { return s.labelPath(frameIndex(s, i)); },
-           py::arg("i"), "DIR/labels/NAME.label of frame i")
+      .def_property_readonly("scan_dir", &io::SequenceDir::scanDir, "where the scans are: DIR/velodyne or DIR")
+      .def_property_readonly("format", [](const io::SequenceDir& s) { return io::scanExtension(s.format()) + 1; },
+                             "the scans' format: 'bin', 'pcd' or 'ply'")
+      .def_property_readonly("labels_in_scans", &io::SequenceDir::labelsInScans,
+                             "True when the labels come from the scans' 'label' field (PCD, PLY)")
+      .def("scan_path", [](const io::SequenceDir& s, py::ssize_t i) { return s.scanPath(frameIndex(s, i)); },
+           py::arg("i"), "the scan file of frame i (DIR/velodyne/NAME.bin, DIR/NAME.pcd, ...)")
+      .def("bin_path", [](const io::SequenceDir& s, py::ssize_t i) { return s.scanPath(frameIndex(s, i)); },
+           py::arg("i"), "scan_path(i), under its older name")
+      .def("label_path",
+           [](const io::SequenceDir& s, py::ssize_t i) {
+             const size_t k = frameIndex(s, i);
+             if (s.labelsInScans()) throw Error(s.scanPath(k) + ": the labels are in the scan's label field");
+             return s.labelPath(k);
+           },
+           py::arg("i"), "DIR/labels/NAME.label of frame i (sgtllc.Error if the labels are in the scans)")
       .def("frame_name", [](const io::SequenceDir& s, py::ssize_t i) { return s.frameName(frameIndex(s, i)); },
            py::arg("i"), "file stem of frame i ('000052')")
       .def("load",

@@ -3,9 +3,9 @@
 #   --dev  also the reliability checks' toolchain (`make test-sanitize`, `make test-tsan`, `make fuzz`): clang with
 #          its sanitizer and libFuzzer runtimes.
 set -eu
-PACKAGES="cmake ninja-build g++ xz-utils libeigen3-dev libnanoflann-dev libyaml-cpp-dev liblzf-dev libcli11-dev \
+PACKAGES="cmake ninja-build ccache g++ xz-utils libeigen3-dev libnanoflann-dev libyaml-cpp-dev liblzf-dev libcli11-dev \
 nlohmann-json3-dev zlib1g-dev libcairo2-dev fonts-dejavu-core libgtest-dev libgmock-dev libbenchmark-dev libceres-dev \
-pybind11-dev python3-dev python3-numpy python3-pytest libfaiss-dev"
+pybind11-dev python3-dev python3-numpy python3-pytest python3-venv python3-pip python3-setuptools python3-wheel libfaiss-dev"
 if [ "${1:-}" = "--dev" ]; then
   PACKAGES="$PACKAGES clang libclang-rt-14-dev"
 fi

@@ -56,13 +56,17 @@ TEST_F(SequenceIo, IgnoresOtherFilesAndSortsByName) {
   EXPECT_TRUE(seq.load(1).points.empty());  // empty scans are valid
 }
 
-TEST_F(SequenceIo, MissingOrEmptyVelodyneIsAnError) {
+TEST_F(SequenceIo, AFolderWithoutScansIsAnError) {
+  // Without velodyne/ the folder itself is searched for scans (test_io_scan_folders.cpp reads them).
+  EXPECT_THAT([&] { sgtllc::io::SequenceDir seq((dir_ / "none").string()); },
+              ThrowsMessage<Error>(HasSubstr((dir_ / "none").string() + ": no such directory")));
+  touch("notes.txt");
   EXPECT_THAT([&] { sgtllc::io::SequenceDir seq(dir_.string()); },
-              ThrowsMessage<Error>(HasSubstr((dir_ / "velodyne").string() + ": no such directory")));
+              ThrowsMessage<Error>(HasSubstr(dir_.string() + ": no scans (.bin, .pcd or .ply) and no velodyne/ folder")));
   fs::create_directories(dir_ / "velodyne");
   touch("velodyne/notes.txt");
   EXPECT_THAT([&] { sgtllc::io::SequenceDir seq(dir_.string()); },
-              ThrowsMessage<Error>(HasSubstr((dir_ / "velodyne").string() + ": no .bin scans")));
+              ThrowsMessage<Error>(HasSubstr((dir_ / "velodyne").string() + ": no scans (.bin, .pcd or .ply)")));
 }
 
 TEST_F(SequenceIo, MissingLabelsNameTheFirstAndCountThem) {

@@ -282,8 +282,8 @@ void addEvalCommand(CLI::App& app) {
   auto o = std::make_shared<EvalCliOptions>();
   CLI::App* cmd = app.add_subcommand("eval", "Precision/recall, F1max, EP and pose accuracy on a sequence or pair list");
   cmd->add_option("SEQ_DIR", o->sequence,
-                  "sequence folder: velodyne/, labels/ (unless --labeller geometric or --labels-dir), poses.txt (KITTI cam0 "
-                  "poses) and calib.txt (Tr)")
+                  std::string(kSequenceFolderHelp) + "; with poses.txt (KITTI cam0 poses, line i = frame i) and "
+                  "calib.txt (Tr)")
       ->required();
   cmd->add_option("--pairs", o->pairs, "evaluate these 'query candidate label' pairs instead of the online protocol");
   cmd->add_flag("--no-pairs", o->no_pairs,

@@ -10,6 +10,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/io/ply.h"
+#include "sgtllc/io/scan_file.h"
 #include "sgtllc/label/geometric_labeller.h"
 
 namespace sgtllc::cli {
@@ -44,7 +45,7 @@ void runLabel(const LabelOptions& o) {
   if (o.out.empty() && o.ply.empty()) throw Error("nothing to write: give --out LABELS.label and/or --export FILE.ply");
   if (!o.out.empty()) checkWritable(o.out, o.force);
   if (!o.ply.empty()) checkWritable(o.ply, o.force);
-  const std::vector<Eigen::Vector3f> points = readScanPoints(o.scan);
+  const std::vector<Eigen::Vector3f> points = io::readScanPoints(o.scan);
   const label::Labelling l = label::GeometricLabeller(config.labeller).classify(points);
   if (!o.out.empty()) io::writeLabelFile(o.out, label::semanticKittiIds(l), io::overwriteIf(o.force));
   if (!o.ply.empty()) writeOutput(o.ply, colouredPly(points, l), o.force);
@@ -70,7 +71,7 @@ void runLabel(const LabelOptions& o) {
 void addLabelCommand(CLI::App& app) {
   auto o = std::make_shared<LabelOptions>();
   CLI::App* cmd = app.add_subcommand("label", "Label a scan from its geometry alone (SemanticKITTI .label, coloured PLY)");
-  cmd->add_option("SCAN", o->scan, "KITTI .bin scan, or a .pcd (x, y, z; a label field is ignored)")->required();
+  cmd->add_option("SCAN", o->scan, "KITTI .bin scan, or a .pcd or .ply (x, y, z; a label field is ignored)")->required();
   cmd->add_option("--out", o->out, "write SemanticKITTI raw ids (uint32 per point) to this .label file");
   cmd->add_option("--export", o->ply, "write the points coloured by class to this ASCII PLY file");
   cmd->add_option("--config", o->config, "YAML configuration (its labeller.* keys; see `sgtllc config`)");

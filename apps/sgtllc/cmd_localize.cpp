@@ -160,7 +160,7 @@ void addLocalizeCommand(CLI::App& app) {
   auto o = std::make_shared<LocalizeOptions>();
   CLI::App* cmd = app.add_subcommand("localize", "Relocalize the frames of a sequence in a saved map (`run --save-map`)");
   cmd->add_option("--map", o->map, "map file written by `sgtllc run --save-map`")->required();
-  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin (and labels/NNNNNN.label, unless --labeller geometric or --labels-dir)");
+  cmd->add_option("SEQ_DIR", o->sequence, kSequenceFolderHelp);
   cmd->add_option("--nodes", o->nodes, "instead of SEQ_DIR: a folder of node files NAME.txt, frames in name order");
   cmd->add_option("--out", o->out,
                   "write one CSV row per frame: query,map_frame,localized,score,score_c,lateral, T_mapframe_query "
@@ -177,7 +177,7 @@ void addLocalizeCommand(CLI::App& app) {
   addTrackOption(cmd, &o->track);
   cmd->callback([o] {
     if (o->sequence.empty() == o->nodes.empty()) {
-      throw CLI::ValidationError("localize", "give either SEQ_DIR (velodyne/, with labels/ unless --labeller geometric) or --nodes NODE_DIR");
+      throw CLI::ValidationError("localize", "give either SEQ_DIR (scans: velodyne/*.bin, or .bin/.pcd/.ply files) or --nodes NODE_DIR");
     }
     localizeCommand(*o);
   });

@@ -9,6 +9,7 @@
 #include "false_loops.h"
 #include "loop_closing.h"
 #include "sgtllc/io/config_yaml.h"
+#include "sgtllc/io/sequence.h"
 #include "trajectory_metrics.h"
 
 namespace fs = std::filesystem;
@@ -34,9 +35,19 @@ const std::vector<std::string> kReportFiles = {"report.md", "metrics.json", "tra
 std::vector<std::string> frameNames(const std::string& frames, size_t count, const Config& config) {
   std::vector<std::string> names;
   if (!frames.empty()) {
-    const eval::FrameSource source = fs::is_directory(fs::path(frames) / "velodyne")
-                                         ? eval::FrameSource::semanticKitti(frames, config)
-                                         : eval::FrameSource::nodeFiles(frames, config);
+    // A folder of scans (velodyne/, or .bin/.pcd/.ply files: io/sequence.h) names frames by its scans, read
+    // without labels (only the names count); any other folder by its node files.
+    std::error_code ec;
+    bool scans = fs::is_directory(fs::path(frames) / "velodyne", ec);
+    for (fs::directory_iterator it(frames, ec), end; !scans && !ec && it != end; it.increment(ec)) {
+      scans = io::scanFormatOf(it->path().string()).has_value();
+    }
+    if (scans) {
+      const io::SequenceDir seq(frames, io::SequenceLabels{false, "", config.labels.format});
+      for (size_t i = 0; i < seq.size(); ++i) names.push_back(seq.frameName(i));
+      return names;
+    }
+    const eval::FrameSource source = eval::FrameSource::nodeFiles(frames, config);
     for (size_t i = 0; i < source.size(); ++i) names.push_back(source.name(i));
     return names;
   }
@@ -127,7 +138,7 @@ void addOptimizeCommand(CLI::App& app) {
   cmd->add_option("--calib", o->calib, "KITTI calib.txt: its Tr converts KITTI poses (odometry, ground truth) to LiDAR");
   addPoseFrameOption(*cmd, o->pose_frame, "--odometry (and of --ground-truth when there is no --calib)");
   cmd->add_option("--frames", o->frames,
-                  "sequence folder (velodyne/) or node folder whose file names the CSV uses (default: frame i is "
+                  "sequence folder (velodyne/, or .bin/.pcd/.ply scans) or node folder whose file names the CSV uses (default: frame i is "
                   "named by its 6-digit number, 000000, 000001, ...)");
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_option("--ground-truth", o->ground_truth,

@@ -242,14 +242,14 @@ void runPair(const PairOptions& o) {
 void addPairCommand(CLI::App& app) {
   auto o = std::make_shared<PairOptions>();
   CLI::App* cmd = app.add_subcommand("pair", "Compare two scans: loop or not, scores and the 6-DoF pose");
-  cmd->add_option("QUERY", o->query, "query scan (.bin with labels, .pcd with a label field) or node file (.txt)")
+  cmd->add_option("QUERY", o->query, "query scan (.bin with labels, .pcd or .ply with a label field) or node file (.txt)")
       ->required();
   cmd->add_option("MATCH", o->match, "candidate scan it may revisit")->required();
   cmd->add_option("--labels-query", o->labels_query,
                   "labels of QUERY, a uint32 or one byte a point (labels.format) (default: ../labels/NAME.label "
                   "beside velodyne/NAME.bin, else NAME.label)");
   cmd->add_option("--labels-match", o->labels_match, "labels of MATCH (same default)");
-  cmd->add_option("--label-field", o->label_field, "PCD field holding the per-point label")->capture_default_str();
+  cmd->add_option("--label-field", o->label_field, "PCD field (PLY vertex property) holding the per-point label")->capture_default_str();
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
   addLabellerOption(cmd, &o->labeller);
   cmd->add_flag("--json", o->json, "print one JSON object");

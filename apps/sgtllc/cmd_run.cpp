@@ -204,7 +204,7 @@ void runSequence(const RunOptions& o) {
 void addRunCommand(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Stream a sequence (scans, their labels unless --labeller geometric, or node files) through the online detector");
-  cmd->add_option("SEQ_DIR", o->sequence, "folder with velodyne/NNNNNN.bin (and labels/NNNNNN.label, unless --labeller geometric or --labels-dir)");
+  cmd->add_option("SEQ_DIR", o->sequence, kSequenceFolderHelp);
   cmd->add_option("--nodes", o->nodes,
                   "instead of SEQ_DIR: a folder of node files NAME.txt (x y z label rows), frames in name order");
   cmd->add_option("--out", o->out,
@@ -233,7 +233,7 @@ void addRunCommand(CLI::App& app) {
   cmd->add_flag("--force", o->force, "overwrite existing output files");
   cmd->callback([o] {
     if (o->sequence.empty() == o->nodes.empty()) {
-      throw CLI::ValidationError("run", "give either SEQ_DIR (velodyne/, with labels/ unless --labeller geometric) or --nodes NODE_DIR");
+      throw CLI::ValidationError("run", "give either SEQ_DIR (scans: velodyne/*.bin, or .bin/.pcd/.ply files) or --nodes NODE_DIR");
     }
     const bool closes = !o->outputs.trajectory.empty() || !o->outputs.graph.empty() || !o->outputs.loops.empty() ||
                         (!o->calib.empty() && o->accumulate == 1) || o->online;

@@ -11,8 +11,8 @@
 #include "sgtllc/io/config_yaml.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
-#include "sgtllc/io/pcd.h"
 #include "sgtllc/io/quote.h"
+#include "sgtllc/io/scan_file.h"
 #include "sgtllc/label/cloud_labeller.h"
 
 namespace fs = std::filesystem;
@@ -61,31 +61,25 @@ eval::FrameSource frameSource(const std::string& sequence, const std::string& no
   }
 }
 
-std::vector<Eigen::Vector3f> readScanPoints(const std::string& path) {
-  const std::string ext = fs::path(path).extension().string();
-  if (ext == ".pcd") return io::readPcdPoints(path);
-  if (ext == ".bin") return io::readKittiBin(path);
-  throw Error(path + ": --labeller geometric reads KITTI .bin or .pcd scans (got '" + ext + "')");
-}
-
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// A scan with the labels of its file, as read.
+/// A scan with the labels of its file, as read: a PCD's or PLY's label field, or a .bin's label file.
 LabeledCloud loadLabelledScan(const std::string& path, const std::string& label_path, const std::string& label_field,
                               LabelFormat format) {
-  const std::string ext = fs::path(path).extension().string();
-  if (ext == ".pcd") {
-    if (!label_path.empty()) throw Error(path + ": a PCD scan carries its labels; drop the separate label file");
-    return io::readPcd(path, label_field);
+  const std::optional<io::ScanFormat> scan = io::scanFormatOf(path);
+  if (!scan) {
+    throw Error(path + ": unknown input format '" + fs::path(path).extension().string() +
+                "' (expected a KITTI .bin, a .pcd, a .ply or a .txt node file)");
   }
-  if (ext != ".bin") {
-    throw Error(path + ": unknown input format '" + ext + "' (expected a KITTI .bin, a .pcd or a .txt node file)");
+  if (*scan == io::ScanFormat::kKittiBin) {
+    return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path, format);
   }
-  return io::readLabeledScan(path, label_path.empty() ? io::defaultLabelPath(path) : label_path, format);
+  if (!label_path.empty()) return io::readScanWithLabelFile(path, label_path, format);
+  return io::readScanWithLabelField(path, label_field);
 }
 
 LabeledCloud loadScan(const std::string& path, const std::string& label_path, const std::string& label_field,
@@ -94,7 +88,7 @@ LabeledCloud loadScan(const std::string& path, const std::string& label_path, co
   if (!labeller.readsLabelFiles()) {
     // The scan alone: no label file is opened (docs/labeller.md).
     if (!label_path.empty()) throw Error(path + ": --labeller geometric reads no label file; drop the label option");
-    return labeller.apply({readScanPoints(path), {}});
+    return labeller.apply({io::readScanPoints(path), {}});
   }
   return labeller.apply(loadLabelledScan(path, label_path, label_field, config.labels.format));
 }

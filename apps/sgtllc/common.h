@@ -37,6 +37,12 @@ Config loadConfigOption(const std::string& path, int threads, const std::string&
 eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
                               const std::string& labels_dir = "");
 
+/// What a SEQ_DIR argument holds (run, eval, localize; io/sequence.h).
+inline constexpr const char* kSequenceFolderHelp =
+    "sequence folder: velodyne/*.bin (SemanticKITTI), or .bin, .pcd or .ply scans (one format) in the folder itself, "
+    "frames in name order; labels from labels/NAME.label, or a PCD/PLY 'label' field, or --labels-dir, or none with "
+    "--labeller geometric";
+
 /// Adds `--labeller file|geometric` to @p cmd.
 void addLabellerOption(CLI::App* cmd, std::string* labeller);
 
@@ -52,13 +58,10 @@ struct FrameNodes {
   double extraction_ms = 0.0;
 };
 
-/// The points of a raw scan for the geometric labeller: a KITTI .bin, or a PCD's x, y, z (a label field, if the
-/// file has one, is skipped). Throws sgtllc::Error naming the file for any other extension.
-std::vector<Eigen::Vector3f> readScanPoints(const std::string& path);
-
-/// Nodes of a KITTI .bin scan (labels from @p label_path or the SemanticKITTI default), a PCD with a label field,
-/// or a node file (.txt: one `x y z label` row per node, label a raw id mapped by config.labels). With the geometric
-/// labeller, a .bin or a PCD without labels (readScanPoints).
+/// Nodes of a KITTI .bin scan (labels from @p label_path or the SemanticKITTI default), a PCD or PLY scan with a
+/// label field (or with @p label_path: a .label file), or a node file (.txt: one `x y z label` row per node, label
+/// a raw id mapped by config.labels). With the geometric labeller, a .bin, PCD or PLY without labels
+/// (io::readScanPoints).
 FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path, const std::string& label_field,
                           const Config& config);
 

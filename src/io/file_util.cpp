@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -103,5 +104,10 @@ void appendReal(std::string& out, Real value) {
 
 void appendShortest(std::string& out, float value) { appendReal(out, value); }
 void appendShortest(std::string& out, double value) { appendReal(out, value); }
+
+std::optional<uint32_t> labelFromReal(double value) {
+  if (!std::isfinite(value) || value < -2147483648.0 || value > 4294967295.0) return std::nullopt;
+  return static_cast<uint32_t>(static_cast<int64_t>(std::llround(value)));
+}
 
 }  // namespace sgtllc::io::detail

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -71,6 +72,11 @@ bool parseInteger(std::string_view token, Int& value) {
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   return ec == std::errc() && end == token.data() + token.size();
 }
+
+/// Converts a stored label (PCD, PLY) to the raw uint32 id. Floats are rounded to the nearest integer. Negative
+/// values wrap (−1 → 0xFFFFFFFF, as a C cast would), so a "−1 = unlabelled" convention never matches a stable class.
+/// Non-finite values and values outside [−2³¹, 2³²) give nullopt.
+std::optional<uint32_t> labelFromReal(double value);
 
 /// Appends the shortest text that reads back to exactly @p value (std::to_chars).
 void appendShortest(std::string& out, float value);

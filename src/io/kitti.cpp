@@ -142,6 +142,11 @@ std::vector<uint32_t> readLabelFile(const std::string& path, size_t point_count,
   return readLabelsOf(path, point_count, format, "");
 }
 
+std::vector<uint32_t> readLabelFileOf(const std::string& path, const std::string& scan_path, size_t point_count,
+                                      LabelFormat format) {
+  return readLabelsOf(path, point_count, format, scan_path);
+}
+
 LabeledCloud readLabeledScan(const std::string& bin_path, const std::string& label_path, LabelFormat format) {
   LabeledCloud cloud;
   cloud.points = readKittiBin(bin_path);

@@ -23,6 +23,7 @@ using detail::PcdData;
 using detail::PcdField;
 using detail::PcdHeader;
 using detail::XyzLabelFields;
+using detail::labelFromReal;
 using detail::typeName;
 
 template <typename T>
@@ -36,13 +37,6 @@ T load(const char* p) {
     std::memcpy(&value, swapped, sizeof(T));
   }
   return value;
-}
-
-/// Converts a stored label to the raw uint32 id. Floats are rounded to the nearest integer. Negative values wrap
-/// (−1 → 0xFFFFFFFF, as a C cast would), so a "−1 = unlabelled" convention never matches a stable class.
-std::optional<uint32_t> labelFromReal(double value) {
-  if (!std::isfinite(value) || value < -2147483648.0 || value > 4294967295.0) return std::nullopt;
-  return static_cast<uint32_t>(static_cast<int64_t>(std::llround(value)));
 }
 
 std::optional<uint32_t> labelFromBytes(const char* p, const PcdField& f) {
@@ -229,6 +223,13 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field) {
 }
 
 std::vector<Eigen::Vector3f> readPcdPoints(const std::string& path) { return readPcdFile(path, "").points; }
+
+std::vector<std::string> pcdFieldNames(const std::string& path) {
+  std::vector<std::string> names;
+  const PcdHeader header = detail::parsePcdHeader(detail::readWholeFile(path), path);
+  for (const PcdField& f : header.fields) names.push_back(f.name);
+  return names;
+}
 
 void writeNodesPcd(const std::string& path, const std::vector<Node>& nodes, int num_classes, Overwrite overwrite) {
   detail::checkNodeLabels(path, nodes, num_classes);

@@ -30,17 +30,18 @@ struct LoadedFrame {
 
 /// How FrameSource::semanticKitti finds a sequence's labels.
 struct FrameSourceOptions {
-  /// Folder of NAME.label files read instead of `DIR/labels/` (`--labels-dir`: a segmentation network's
-  /// predictions). Not used with labeller.source geometric, which reads no labels.
+  /// Folder of NAME.label files read instead of `DIR/labels/` or a PCD/PLY label field (`--labels-dir`: a
+  /// segmentation network's predictions). Not used with labeller.source geometric, which reads no labels.
   std::string labels_dir;
 };
 
 /// An ordered list of frames that can be loaded independently (and so in parallel).
 class FrameSource {
  public:
-  /// `DIR/velodyne/NAME.bin` + `DIR/labels/NAME.label` (or options.labels_dir/NAME.label), clustered with
-  /// @p config. With config.labeller.source geometric only the scans are read and the geometric labeller gives
-  /// the classes (docs/labeller.md).
+  /// The scans of a sequence folder (io::SequenceDir: `DIR/velodyne/NAME.bin`, or `.bin`, `.pcd` or `.ply`
+  /// scans in DIR itself) with their labels (`DIR/labels/NAME.label`, options.labels_dir/NAME.label, or a PCD/PLY
+  /// label field), clustered with @p config. With config.labeller.source geometric only the scans are read and
+  /// the geometric labeller gives the classes (docs/labeller.md).
   static FrameSource semanticKitti(const std::string& dir, const Config& config,
                                    const FrameSourceOptions& options = {});
   /// `DIR/NAME.txt` node files (one `x y z label` row per node), labels mapped with @p config.labels.

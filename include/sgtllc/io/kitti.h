@@ -32,6 +32,11 @@ std::vector<uint32_t> readLabelFile(const std::string& path);
 /// neither 20 (uint32 labels, 4 bytes a point) nor 5 (uint8 labels, 1 byte a point)`.
 std::vector<uint32_t> readLabelFile(const std::string& path, size_t point_count, LabelFormat format = LabelFormat::kAuto);
 
+/// readLabelFile(path, point_count, format) for the scan @p scan_path (any format: a PCD or PLY scan's labels may
+/// be a .label file too), whose name the size error gives instead of "the scan".
+std::vector<uint32_t> readLabelFileOf(const std::string& path, const std::string& scan_path, size_t point_count,
+                                      LabelFormat format = LabelFormat::kAuto);
+
 /// Reads a scan and its labels (in @p format; see readLabelFile) and checks that there is one label a point; the
 /// error names both files, the point count and the label file's size (`point/label count mismatch: A.bin has 3
 /// points but A.label has 8 bytes, neither 12 (uint32 labels, 4 bytes a point) nor 3 (uint8 labels, 1 byte a

@@ -36,6 +36,10 @@ LabeledCloud readPcd(const std::string& path, const std::string& label_field = "
 /// field is needed.
 std::vector<Eigen::Vector3f> readPcdPoints(const std::string& path);
 
+/// The FIELDS of a PCD file, in file order (its header only is parsed). Throws as readPcd for a missing file or a
+/// malformed header.
+std::vector<std::string> pcdFieldNames(const std::string& path);
+
 /// Writes nodes as an ascii PCD v0.7 with fields x y z (F4) and label (U4, the stable class index 0..C−1 for
 /// C = @p num_classes, Config::numClasses()), readable by PCL as pcl::PointXYZL. Coordinates are written as the
 /// shortest text that reads back to the same float.
