@@ -70,7 +70,6 @@ Footprint LoopDetector::footprint(const LabeledCloud& cloud) const {
   return computeFootprint(cloud, labels_, config_.verification);
 }
 
-
 int LoopDetector::firstSearchedFrame() const {
   return std::max(config_.retrieval.exclude_recent, config_.retrieval.warmup_frames);
 }

@@ -44,7 +44,8 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     return cloud;
   };
   // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
-  source.reduce_ = [extractor, store, labeller, label_map, verification = config.verification](const LabeledCloud& input) {
+  source.reduce_ = [extractor, store, labeller, label_map,
+                    verification = config.verification](const LabeledCloud& input) {
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
     LabeledCloud labelled;
