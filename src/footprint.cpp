@@ -52,7 +52,7 @@ FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match
       const int i = static_cast<int>(k / static_cast<size_t>(side)), j = static_cast<int>(k % static_cast<size_t>(side));
       const Eigen::Vector3d p((i - query.half + 0.5) * cell, (j - query.half + 0.5) * cell, 0.0);
       const Eigen::Vector3d m = R * p + t;
-      if (m.head<2>().norm() > reach) continue;
+      if (!(m.head<2>().norm() <= reach)) continue;  // a NaN pose compares nothing (and casts nothing below)
       ++o.compared;
       const int mi = static_cast<int>(std::floor(m.x() / cell)) + match.half;
       const int mj = static_cast<int>(std::floor(m.y() / cell)) + match.half;
