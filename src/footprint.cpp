@@ -36,9 +36,29 @@ Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, co
   return f;
 }
 
+Footprint dilateFootprint(const Footprint& f) {
+  if (f.empty() || f.dilated) return f;
+  Footprint out = f;
+  out.dilated = true;
+  const int side = 2 * f.half;
+  for (size_t w = 0; w < f.bits.size(); ++w) {
+    for (uint64_t word = f.bits[w]; word != 0; word &= word - 1) {
+      const size_t k = w * 64 + static_cast<size_t>(__builtin_ctzll(word));
+      const int i = static_cast<int>(k / static_cast<size_t>(side)), j = static_cast<int>(k % static_cast<size_t>(side));
+      for (int a = std::max(0, i - 1); a <= std::min(side - 1, i + 1); ++a) {
+        for (int b = std::max(0, j - 1); b <= std::min(side - 1, j + 1); ++b) {
+          const size_t n = static_cast<size_t>(a) * static_cast<size_t>(side) + static_cast<size_t>(b);
+          out.bits[n >> 6] |= uint64_t{1} << (n & 63u);
+        }
+      }
+    }
+  }
+  return out;
+}
+
 FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match, const Eigen::Matrix4d& T_match_query) {
   FootprintOverlap o;
-  if (query.empty() || match.empty() || query.half != match.half || query.cell != match.cell) return o;
+  if (query.empty() || match.empty() || query.dilated || query.half != match.half || query.cell != match.cell) return o;
   const int side = 2 * query.half;
   const double cell = query.cell;
   const double reach = 0.8 * query.half * cell;  // away from the match grid's edge, where its sensor saw little
@@ -56,8 +76,8 @@ FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match
       ++o.compared;
       const int mi = static_cast<int>(std::floor(m.x() / cell)) + match.half;
       const int mj = static_cast<int>(std::floor(m.y() / cell)) + match.half;
-      bool hit = false;
-      for (int di = -1; di <= 1 && !hit; ++di) {
+      bool hit = match.dilated && match.occupied(mi, mj);
+      for (int di = -1; di <= 1 && !hit && !match.dilated; ++di) {
         for (int dj = -1; dj <= 1 && !hit; ++dj) hit = match.occupied(mi + di, mj + dj);
       }
       hits += hit ? 1 : 0;

@@ -98,6 +98,12 @@ TEST(Footprint, OverlapEqualsTheBruteForceReferenceOnRandomScenesAndPoses) {
     const FootprintOverlap fast = footprintOverlap(fa, fb, T), slow = bruteForceOverlap(fa, fb, T);
     EXPECT_EQ(fast.compared, slow.compared) << trial;
     EXPECT_DOUBLE_EQ(fast.share, slow.share) << trial;
+    // A stored frame is kept dilated: the same overlap with one look-up a cell.
+    const Footprint stored = dilateFootprint(fb);
+    ASSERT_TRUE(stored.dilated);
+    const FootprintOverlap dilated = footprintOverlap(fa, stored, T);
+    EXPECT_EQ(dilated.compared, slow.compared) << trial;
+    EXPECT_DOUBLE_EQ(dilated.share, slow.share) << trial;
   }
 }
 

@@ -22,6 +22,9 @@ struct Footprint {
   float cell = 0.0f;           ///< cell side (m)
   int half = 0;                ///< the grid has 2·half cells a side; cell (i, j) covers [(i − half)·cell, …)
   std::vector<uint64_t> bits;  ///< row-major occupancy, (2·half)² bits; empty: no footprint (node input, maps)
+  /// true: every cell next to an occupied one is set as well (dilateFootprint), the form a stored frame keeps so
+  /// that each query cell costs one look-up instead of nine.
+  bool dilated = false;
 
   bool empty() const { return bits.empty(); }
   bool occupied(int i, int j) const;
@@ -32,6 +35,9 @@ struct Footprint {
 /// verification.min_footprint_overlap is 0. A pure function of its inputs.
 Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, const VerificationConfig& config);
 
+/// @p f with each occupied cell's eight neighbours set too, and Footprint::dilated; @p f itself if empty or dilated.
+Footprint dilateFootprint(const Footprint& f);
+
 /// How two footprints agree under a pose.
 struct FootprintOverlap {
   int compared = 0;    ///< occupied query cells that land well inside the match's grid (within 0.8 of its radius)
@@ -40,7 +46,8 @@ struct FootprintOverlap {
 
 /// Moves the centre of every occupied cell of @p query by @p T_match_query (p_match = T · p_query, the query's
 /// cell centres taken at the sensor's height) and counts those that fall on an occupied cell of @p match or one of
-/// its eight neighbours (one cell of slack for the pose error and the grid's phase). Both must have one grid.
+/// its eight neighbours (one cell of slack for the pose error and the grid's phase). Both must have one grid; @p match
+/// may be dilated (the same result, faster), @p query must not be.
 FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match, const Eigen::Matrix4d& T_match_query);
 
 }  // namespace sgtllc
