@@ -76,7 +76,7 @@ void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, 
 /// leaves it mostly outside the match's reach says too little either way.
 constexpr int kMinFootprintCells = 20;
 
-/// The footprint check (algorithm §7.6): a pose under which the structure around the nodes does not agree is not
+/// The footprint check (algorithm §7.7): a pose under which the structure around the nodes does not agree is not
 /// a revisit, however many nodes agree.
 void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc,
                      MatchResult* result) {

@@ -1,4 +1,4 @@
-// The footprint check (algorithm §7.6, footprint.h): which cells a scan occupies, the overlap of two footprints
+// The footprint check (algorithm §7.7, footprint.h): which cells a scan occupies, the overlap of two footprints
 // under a pose against a brute-force reference, and verification rejecting a pose the structure contradicts, on
 // real KITTI 00 scans.
 #include <cmath>

@@ -140,7 +140,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
             << ", refinement " << fixed(t.refinement_ms, 2) << "\n";
 }
 
-/// The footprint check (algorithm §7.6), or null where it did not run (node files, the check off, no pose).
+/// The footprint check (algorithm §7.7), or null where it did not run (node files, the check off, no pose).
 Json footprintJson(const FootprintOverlap& f, const VerificationConfig& config) {
   if (f.compared == 0) return nullptr;
   return {{"share", f.share}, {"compared_cells", f.compared}, {"min_share", config.min_footprint_overlap}};

@@ -303,7 +303,7 @@ struct VerificationConfig {
   /// ... and the offset at which score_t reaches 0 (m); 0 = no decay, as the paper [0, 1000], 0 or greater than
   /// offset_decay_start.
   double offset_decay_end = 20.0;
-  /// Footprint check (footprint.h, algorithm §7.6): a verified candidate is rejected (Rejection::kFootprint) when,
+  /// Footprint check (footprint.h, algorithm §7.7): a verified candidate is rejected (Rejection::kFootprint) when,
   /// under its pose, fewer than this share of the query's structure cells land on or next to the match's (with at
   /// least 20 cells compared); 0 = off, as the paper [0, 1]. Few nodes (a sparse sensor: 5–15 a frame) can agree
   /// by chance between two places with similar objects; the walls and vegetation around them rarely do. Needs the

@@ -1,6 +1,6 @@
 /// @file footprint.h
 /// @brief A frame's footprint: the horizontal cells its structure occupies, and how well two footprints overlap
-///        under a verified pose (docs/algorithm.md §7.6).
+///        under a verified pose (docs/algorithm.md §7.7).
 #pragma once
 
 #include <cstdint>

@@ -19,7 +19,7 @@ enum class Rejection {
   kNone,              ///< passed the gates and RANSAC accepted a hypothesis
   kFewAssociations,   ///< score_c < σ_3 or |LA| < min_associations (algorithm §7.1)
   kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (algorithm §7.2)
-  /// the pose puts too few of the query's structure cells on the match's (footprint.h; algorithm §7.6)
+  /// the pose puts too few of the query's structure cells on the match's (footprint.h; algorithm §7.7)
   kFootprint,
 };
 
@@ -42,7 +42,7 @@ struct MatchResult {
   /// (algorithm §7.5), or RANSAC's hypothesis where that refit would tilt beyond verification.max_tilt_deg; the
   /// identity unless rejection == kNone.
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();
-  /// The footprint check under the verified pose (algorithm §7.6); compared = 0 when it did not run (no footprints,
+  /// The footprint check under the verified pose (algorithm §7.7); compared = 0 when it did not run (no footprints,
   /// the check off, no pose).
   FootprintOverlap footprint;
 };

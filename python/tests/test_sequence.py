@@ -88,7 +88,7 @@ def test_threads_do_not_change_results(simulated):
 def test_process_nodes_equals_process(simulated):
     config = sgtllc.Config()
     config.retrieval.exclude_recent = 10
-    # Nodes carry no footprint (algorithm §7.6): with the check off the two paths verify alike.
+    # Nodes carry no footprint (algorithm §7.7): with the check off the two paths verify alike.
     config.verification.min_footprint_overlap = 0.0
     seq = sgtllc.SequenceDir(str(simulated))
     points_detector, nodes_detector = sgtllc.LoopDetector(config), sgtllc.LoopDetector(config)
