@@ -42,7 +42,6 @@ void search(const DescribedFrame& query, const std::vector<float>& key, const Fr
 LoopDetector::LoopDetector(const Config& config)
     : config_(validated(config)),  // before the extractor reads the class set
       extractor_(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads),
-      labels_(effectiveLabelConfig(config)),
       database_(config.retrieval, config.threads),
       clouds_(config.registration, effectiveLabelConfig(config)),
       described_(std::make_unique<internal::DescribedCache>(kDescribedCacheFrames)) {
@@ -67,7 +66,7 @@ LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopD
 }
 
 Footprint LoopDetector::footprint(const LabeledCloud& cloud) const {
-  return computeFootprint(cloud, labels_, config_.verification);
+  return computeFootprint(cloud, extractor_.labelMap(), config_.verification);
 }
 
 int LoopDetector::firstSearchedFrame() const {
@@ -230,7 +229,7 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   NodeExtractionResult q = extractor.extract(query);
   NodeExtractionResult m = extractor.extract(match);
   const double extraction_ms = msSince(start);
-  const LabelMap labels(effectiveLabelConfig(config));
+  const LabelMap& labels = extractor.labelMap();
   PairResult result = comparePair(std::move(q.nodes), std::move(m.nodes), config,
                                   computeFootprint(query, labels, config.verification),
                                   computeFootprint(match, labels, config.verification));

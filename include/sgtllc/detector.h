@@ -123,7 +123,6 @@ class LoopDetector {
 
   Config config_;
   NodeExtractor extractor_;
-  LabelMap labels_;
   std::vector<Footprint> footprints_;
   size_t footprint_bytes_ = 0;
   FrameDatabase database_;

@@ -50,6 +50,8 @@ class NodeExtractor {
 
   /// Throws sgtllc::Error if points and labels differ in length.
   NodeExtractionResult extract(const LabeledCloud& cloud) const;
+  /// How this extractor reads the scans' ids (the footprint of a scan reads them the same way).
+  const LabelMap& labelMap() const { return label_map_; }
 
  private:
   ClusterConfig config_;

@@ -33,7 +33,6 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
   const LabelConfig& labels = labeller->nodeLabels();
   auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
   auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only
-  auto label_map = std::make_shared<const LabelMap>(labels);
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
   source.read_ = [seq, geometric](size_t i) {
@@ -44,15 +43,14 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     return cloud;
   };
   // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
-  source.reduce_ = [extractor, store, labeller, label_map,
-                    verification = config.verification](const LabeledCloud& input) {
+  source.reduce_ = [extractor, store, labeller, verification = config.verification](const LabeledCloud& input) {
     LoadedFrame f;
     auto start = std::chrono::steady_clock::now();
     LabeledCloud labelled;
     if (labeller->changesLabels()) labelled = labeller->apply(input);
     const LabeledCloud& cloud = labeller->changesLabels() ? labelled : input;
     NodeExtractionResult r = extractor->extract(cloud);
-    f.footprint = computeFootprint(cloud, *label_map, verification);
+    f.footprint = computeFootprint(cloud, extractor->labelMap(), verification);
     f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
     f.nodes = std::move(r.nodes);
     f.stats = r.stats;
