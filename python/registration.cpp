@@ -34,6 +34,8 @@ void bindRegistration(py::module_& m) {
       .def_readwrite("match_max_points", &R::match_max_points, "most match points kept")
       .def_readwrite("normal_neighbors", &R::normal_neighbors, "neighbours whose covariance gives a normal")
       .def_readwrite("max_correspondence", &R::max_correspondence, "pairing distance (m)")
+      .def_readwrite("coarse_correspondence", &R::coarse_correspondence,
+                     "pairing distance of a first, coarse ICP stage (m); 0 = none")
       .def_readwrite("kernel", &R::kernel, "Cauchy scale on residuals (m); 0 = unweighted")
       .def_readwrite("max_iterations", &R::max_iterations, "Gauss-Newton iterations at most")
       .def_readwrite("convergence", &R::convergence, "converged once an update is below this (m, rad)")

@@ -81,6 +81,8 @@ void bindResults(py::module_& m) {
       .def_readonly("rejection", &MatchResult::rejection, "why score_t is 0, or NONE")
       .def_readonly("T_match_query", &MatchResult::T_match_query, "(4, 4): p_match = T_match_query @ p_query")
       .def_readonly("footprint", &MatchResult::footprint, "the footprint check under the verified pose")
+      .def_readonly("by_consistency", &MatchResult::by_consistency,
+                    "the pairs came from the consistency path, not from the descriptors (algorithm 7.8)")
       .def_property_readonly("association_pairs", [](const MatchResult& r) { return pairsArray(r, nullptr); },
                              "(K, 2) int32: query node, match node of every association")
       .def_property_readonly("inlier_pairs", [](const MatchResult& r) { return pairsArray(r, &r.inliers); },

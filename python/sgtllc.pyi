@@ -104,6 +104,8 @@ class VerificationConfig:
     ransac_confidence: float
     score_formula: ScoreFormula
     guided_matching: bool
+    consistency_pairs: int
+    consistency_min_footprint: float
     max_tilt_deg: float
     use_ransac: bool
     sigma_4: float
@@ -157,6 +159,7 @@ class RegistrationConfig:
     match_max_points: int
     normal_neighbors: int
     max_correspondence: float
+    coarse_correspondence: float
     kernel: float
     max_iterations: int
     convergence: float
@@ -260,6 +263,7 @@ class MatchResult:
     association_pairs: np.ndarray  # (K, 2) int32
     inlier_pairs: np.ndarray  # (n_in, 2) int32
     footprint: FootprintOverlap
+    by_consistency: bool
 class Refinement:
     status: RefinementStatus
     used: bool

@@ -1,51 +1,102 @@
 #!/usr/bin/env python3
-"""Consecutive keyframes of KITTI-layout scenes through `sgtllc pair --json`: how many pairs verify, and how many
-of those have a pose within 1 m / 5 deg of the scenes' own poses (LiDAR poses, poses.txt). The nuScenes figures
-of BENCHMARKS.md ("Node repeatability on real scans") come from it.
+"""Pairs of real keyframes of KITTI-layout scenes through `sgtllc pair --json`: how many pairs are loops, and how
+many of those have a pose within 1 m / 5 deg and within 0.3 m / 2 deg of the scenes' own poses (LiDAR poses,
+poses.txt). The nuScenes figures of BENCHMARKS.md ("Node repeatability on real scans", "Consistency path") come
+from it.
 
-  scripts/pair-consecutive.py SGTLLC SCENE_DIR... [-- PAIR_ARGS...]
+  scripts/pair-consecutive.py SGTLLC SCENE_DIR... [--gap G] [--far | --cross] [-- PAIR_ARGS...]
+
+  --gap G   each keyframe B against the keyframe A = B - G of its scene (default 1)
+  --far     instead, pairs of one scene more than 20 m apart (every third A, every second B > A): none is a loop
+  --cross   instead, pairs of keyframes of two different scenes (frames 0, 13, 26, 38 against 0, 19, 38)
+
   e.g. scripts/pair-consecutive.py build/apps/sgtllc/sgtllc nuscenes/0001 nuscenes/0005 -- --config configs/nuscenes.yaml
 """
-import glob
 import json
 import os
 import subprocess
 import sys
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
 
-def main(argv):
-    if len(argv) < 3:
-        sys.exit(__doc__)
-    sgtllc, rest = argv[1], argv[2:]
-    scenes, extra = (rest[:rest.index("--")], rest[rest.index("--") + 1:]) if "--" in rest else (rest, [])
-    geometric = "geometric" in extra
-    pairs = loops = good = 0
-    nodes = []
+def poses(scene):
+    rows = np.loadtxt(os.path.join(scene, "poses.txt")).reshape(-1, 3, 4)
+    out = np.tile(np.eye(4), (len(rows), 1, 1))
+    out[:, :3, :] = rows
+    return out
+
+
+def frame(scene, kind, i):
+    return os.path.join(scene, kind, f"{i:06d}.{'bin' if kind == 'velodyne' else 'label'}")
+
+
+def pairs_of(scenes, mode, gap):
+    """(query scene, query frame, match scene, match frame, reference T_match_query or None)."""
+    out = []
+    if mode == "cross":
+        for k, a in enumerate(scenes):
+            for b in scenes[k + 1:]:
+                out += [(a, i, b, j, None) for i in (0, 13, 26, 38) for j in (0, 19, 38)]
+        return out
     for scene in scenes:
-        rows = np.loadtxt(os.path.join(scene, "poses.txt")).reshape(-1, 3, 4)
-        poses = np.tile(np.eye(4), (len(rows), 1, 1))
-        poses[:, :3, :] = rows
-        bins = sorted(glob.glob(os.path.join(scene, "velodyne", "*.bin")))
-        for a, b in zip(bins[:-1], bins[1:]):
-            ia, ib = (int(os.path.basename(p)[:-4]) for p in (a, b))
-            labels = [] if geometric else [
-                "--labels-query", os.path.join(scene, "labels", f"{ib:06d}.label"),
-                "--labels-match", os.path.join(scene, "labels", f"{ia:06d}.label")]
-            out = subprocess.run([sgtllc, "pair", b, a, "--json"] + labels + extra, capture_output=True, text=True)
-            if out.returncode != 0:
-                sys.exit(out.stderr)
-            r = json.loads(out.stdout)
-            pairs += 1
-            nodes.append(r["nodes_query"])
-            if not r["loop"]:
-                continue
-            loops += 1
-            error = np.linalg.inv(np.linalg.inv(poses[ia]) @ poses[ib]) @ np.array(r["T_match_query"])
-            angle = np.degrees(np.arccos(np.clip((np.trace(error[:3, :3]) - 1) / 2, -1, 1)))
-            good += np.linalg.norm(error[:3, 3]) <= 1.0 and angle <= 5.0
-    print(f"pairs {pairs}, median nodes {np.median(nodes):g}, loops {loops}, within 1 m / 5 deg {good}")
+        p = poses(scene)
+        if mode == "far":
+            out += [(scene, b, scene, a, None) for a in range(0, len(p), 3) for b in range(a + 1, len(p), 2)
+                    if np.linalg.norm(p[a][:3, 3] - p[b][:3, 3]) > 20.0]
+        else:
+            out += [(scene, b, scene, b - gap, np.linalg.inv(p[b - gap]) @ p[b]) for b in range(gap, len(p))]
+    return out
+
+
+def main(argv):
+    args, extra = (argv[1:argv.index("--")], argv[argv.index("--") + 1:]) if "--" in argv else (argv[1:], [])
+    mode, gap = "gap", 1
+    if "--gap" in args:
+        k = args.index("--gap")
+        gap = int(args[k + 1])
+        args = args[:k] + args[k + 2:]
+    for flag in ("--far", "--cross"):
+        if flag in args:
+            mode = flag[2:]
+            args.remove(flag)
+    if len(args) < 2:
+        sys.exit(__doc__)
+    sgtllc, scenes = args[0], args[1:]
+    geometric = "geometric" in extra or any(
+        a.endswith(".yaml") and "source: geometric" in open(a).read() for a in extra)
+
+    def run(job):
+        qs, qi, ms, mi, _ = job
+        labels = [] if geometric else ["--labels-query", frame(qs, "labels", qi),
+                                       "--labels-match", frame(ms, "labels", mi)]
+        out = subprocess.run([sgtllc, "pair", frame(qs, "velodyne", qi), frame(ms, "velodyne", mi), "--json"]
+                             + labels + extra, capture_output=True, text=True)
+        if out.returncode != 0:
+            sys.exit(out.stderr)
+        return json.loads(out.stdout)
+
+    jobs = pairs_of(scenes, mode, gap)
+    with ThreadPoolExecutor(2) as pool:
+        results = list(pool.map(run, jobs))
+    loops = within_1m = within_03m = by_consistency = 0
+    for job, r in zip(jobs, results):
+        if not r["loop"]:
+            continue
+        loops += 1
+        by_consistency += r["path"] == "consistency"
+        if job[4] is None:
+            print(f"loop: {frame(job[0], 'velodyne', job[1])} -> {frame(job[2], 'velodyne', job[3])}")
+            continue
+        error = np.linalg.inv(job[4]) @ np.array(r["T_match_query"])
+        angle = np.degrees(np.arccos(np.clip((np.trace(error[:3, :3]) - 1) / 2, -1, 1)))
+        distance = np.linalg.norm(error[:3, 3])
+        within_1m += distance <= 1.0 and angle <= 5.0
+        within_03m += distance <= 0.3 and angle <= 2.0
+    nodes = np.median([r["nodes_query"] for r in results])
+    print(f"pairs {len(jobs)}, median nodes {nodes:g}, loops {loops} ({by_consistency} by the consistency path), "
+          f"within 1 m / 5 deg {within_1m}, within 0.3 m / 2 deg {within_03m}")
 
 
 if __name__ == "__main__":

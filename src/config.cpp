@@ -158,6 +158,8 @@ void Config::validate() const {
                           " must be 0 (no decay) or greater than verification.offset_decay_start = " +
                           text(v.offset_decay_start));
   }
+  checkInt("verification.consistency_pairs", v.consistency_pairs, 0, 16);
+  checkReal("verification.consistency_min_footprint", v.consistency_min_footprint, {0.0}, {1.0});
   checkReal("verification.min_footprint_overlap", v.min_footprint_overlap, {0.0}, {1.0});
   checkReal("verification.footprint_cell", v.footprint_cell, {0.2}, {10.0});
   checkReal("verification.footprint_radius", v.footprint_radius, {5.0}, {200.0});

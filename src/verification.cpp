@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sgtllc/consistent_matching.h"
 #include "sgtllc/guided_matching.h"
 #include "sgtllc/ransac.h"
 
@@ -88,9 +89,81 @@ void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, c
   result->T_match_query = Eigen::Matrix4d::Identity();
 }
 
-}  // namespace
+/// score_t of a pose-verified result under the configured formula, scaled by the offset decay; then the footprint
+/// check (algorithm §7.3, §7.7).
+void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc, int la,
+                   MatchResult* result) {
+  const double n_in = static_cast<double>(result->inliers.size());
+  switch (vc.score_formula) {
+    case ScoreFormula::kPaper:
+      result->score_t = n_in / la;
+      break;
+    case ScoreFormula::kLegacy:
+      result->score_t = (n_in - 1.0) / la;
+      break;
+    case ScoreFormula::kOverlap:
+      result->score_t = n_in / std::max(query.numNodes(), match.numNodes());
+      break;
+  }
+  result->score_t *= offsetWeight(result->T_match_query.topRightCorner<3, 1>().norm(), vc);
+  checkFootprints(query, match, vc, result);
+}
 
-MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
+/// The consistency path (algorithm §7.8): each query node's `consistency_pairs` most similar same-class match
+/// nodes are hypotheses, their largest pairwise-consistent one-to-one set the inliers. Where the descriptors of a
+/// sparse or re-labelled graph change with the viewpoint, the true pairs are rarely each node's best match but
+/// still agree in their distances. Returns a result with rejection kRansacFailed when no rigid set is found.
+MatchResult matchByConsistency(const DescribedFrame& query, const DescribedFrame& match, const Config& config,
+                               double score_c) {
+  const VerificationConfig& vc = config.verification;
+  MatchResult result;
+  result.score_c = score_c;
+  result.rejection = Rejection::kRansacFailed;
+  result.by_consistency = true;
+  const std::vector<NodeMatch> pairs =
+      hypothesisPairs(query, match, vc.consistency_pairs, config.association, config.descriptor);
+  if (static_cast<int>(pairs.size()) < vc.min_inliers) return result;
+  std::vector<Eigen::Vector3d> source, target;
+  std::vector<int> source_ids, target_ids;
+  for (const NodeMatch& m : pairs) {
+    source.push_back(query.graph.nodes[m.query].centre);
+    target.push_back(match.graph.nodes[m.match].centre);
+    source_ids.push_back(m.query);
+    target_ids.push_back(m.match);
+  }
+  const std::vector<int> set =
+      largestConsistentSet(source, target, source_ids, target_ids, 2.0 * vc.inlier_threshold);
+  if (static_cast<int>(set.size()) < vc.min_inliers) return result;
+  std::vector<Eigen::Vector3d> src_in, dst_in;
+  for (int k : set) {
+    src_in.push_back(source[k]);
+    dst_in.push_back(target[k]);
+  }
+  const Eigen::Matrix4d T = fitRigid(src_in, dst_in);
+  const double max_tilt = vc.max_tilt_deg * M_PI / 180.0;
+  if (!isUpright(T, max_tilt)) return result;
+  // Consistent distances allow a mirror image; the fit's residuals do not.
+  const double thr2 = vc.inlier_threshold * vc.inlier_threshold;
+  for (int k : set) {
+    if ((T.topLeftCorner<3, 3>() * source[k] + T.topRightCorner<3, 1>() - target[k]).squaredNorm() < thr2) {
+      result.inliers.push_back(static_cast<int>(result.associations.size()));
+      result.associations.push_back(pairs[k]);
+    }
+  }
+  if (static_cast<int>(result.inliers.size()) < vc.min_inliers) {
+    result.inliers.clear();
+    result.associations.clear();
+    return result;
+  }
+  result.rejection = Rejection::kNone;
+  result.T_match_query = T;
+  if (vc.guided_matching) addGuidedInliers(query, match, ransacParams(vc), &result);
+  scoreVerified(query, match, vc, static_cast<int>(result.associations.size()), &result);
+  return result;
+}
+
+/// The paper's path: LA by descriptors, the gates, RANSAC, guided matching (algorithm §6, §7.1–§7.3).
+MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
   const VerificationConfig& vc = config.verification;
   MatchResult result;
   result.associations = associateNodes(query, match, config.association, config.descriptor);
@@ -132,22 +205,28 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   // RANSAC checked its hypotheses; a refit to nearly collinear centres leaves the turn about their line free.
   if (!isUpright(result.T_match_query, params.max_tilt)) result.T_match_query = ransac.T_target_source;
   if (vc.guided_matching && vc.score_formula == ScoreFormula::kOverlap) addGuidedInliers(query, match, params, &result);
-
-  const double n_in = static_cast<double>(result.inliers.size());
-  switch (vc.score_formula) {
-    case ScoreFormula::kPaper:
-      result.score_t = n_in / la;
-      break;
-    case ScoreFormula::kLegacy:
-      result.score_t = (n_in - 1.0) / la;
-      break;
-    case ScoreFormula::kOverlap:
-      result.score_t = n_in / std::max(query.numNodes(), match.numNodes());
-      break;
-  }
-  result.score_t *= offsetWeight(result.T_match_query.topRightCorner<3, 1>().norm(), vc);
-  checkFootprints(query, match, vc, &result);
+  scoreVerified(query, match, vc, la, &result);
   return result;
+}
+
+}  // namespace
+
+MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
+  MatchResult result = matchByDescriptors(query, match, config);
+  const VerificationConfig& vc = config.verification;
+  if (vc.consistency_pairs <= 0 || !vc.use_ransac || vc.score_formula != ScoreFormula::kOverlap ||
+      isLoop(result, vc)) {
+    return result;
+  }
+  // Its many hypotheses find a small consistent set more often by chance than RANSAC on LA does, so it answers
+  // only where the footprints can judge its pose, and by a stricter share (BENCHMARKS.md "Consistency path").
+  if (query.footprint.empty() || match.footprint.empty() || vc.min_footprint_overlap <= 0.0) return result;
+  MatchResult consistent = matchByConsistency(query, match, config, result.score_c);
+  if (!isLoop(consistent, vc) || consistent.footprint.compared < kMinFootprintCells ||
+      consistent.footprint.share < vc.consistency_min_footprint) {
+    return result;
+  }
+  return consistent;
 }
 
 }  // namespace sgtllc

@@ -1,7 +1,11 @@
 // The 32-beam sensor on the command line: `pair` on two consecutive real nuScenes-lidarseg keyframes (one byte of
 // label per point, data/nuscenes) with configs/nuscenes.yaml, and a label file of the wrong size.
+#include <array>
+#include <cmath>
+#include <fstream>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +47,33 @@ TEST(CliNuScenes, HybridSplitsPolesAndTrunksOffTheLabels) {
   ASSERT_EQ(file.status, 0) << file.out;
   EXPECT_EQ(nodesOn(file.out, "query", "34752"), 3) << file.out;
   EXPECT_NE(file.out.find("loop: no"), std::string::npos) << file.out;
+}
+
+TEST(CliNuScenes, LabelFreePairVerifiesByConsistency) {
+  // From the scans alone the two keyframes have 5 nodes each; the descriptors' 4 pairs hold no rigid set of 3, so
+  // RANSAC fails, but 3 of the nodes agree in their distances and the consistency path (algorithm §7.8) verifies
+  // them. Reference: the scene's poses, T_0_1 = (−0.272, 2.072, 0.002) m, yaw 9.10°.
+  const std::string pair = "pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin --labeller geometric";
+  const CliRun r = run(pair + " --config " + kConfig);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("loop: YES"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pairs chosen by geometric consistency"), std::string::npos) << r.out;
+  const std::regex row("\\[ +(\\S+) +(\\S+) +\\S+ +(\\S+) \\]");
+  std::vector<std::array<double, 3>> rows;
+  for (std::sregex_iterator it(r.out.begin(), r.out.end(), row), end; it != end && rows.size() < 2; ++it) {
+    rows.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])});
+  }
+  ASSERT_EQ(rows.size(), 2u) << r.out;
+  EXPECT_NEAR(rows[0][2], -0.272, 0.3) << r.out;  // x
+  EXPECT_NEAR(rows[1][2], 2.072, 0.3) << r.out;   // y
+  EXPECT_NEAR(std::atan2(rows[1][0], rows[0][0]) * 180.0 / M_PI, 9.10, 2.0) << r.out;  // yaw
+
+  const std::string off = testing::TempDir() + "/consistency_off.yaml";
+  std::ofstream(off) << "labels:\n  preset: nuscenes\nverification:\n  consistency_pairs: 0\n";
+  const CliRun paper = run(pair + " --config " + off);
+  ASSERT_EQ(paper.status, 0) << paper.out;
+  EXPECT_NE(paper.out.find("loop: no"), std::string::npos) << paper.out;
+  EXPECT_NE(paper.out.find("rejected: ransac_failed"), std::string::npos) << paper.out;
 }
 
 TEST(CliNuScenes, WithoutThePresetTheIdsAreReadAsSemanticKitti) {

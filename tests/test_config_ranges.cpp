@@ -92,6 +92,8 @@ std::vector<Range> ranges() {
   r.push_back({"verification.neighbour_frames", {"0", "50"}, {"-1", "51"}, "[0, 50]"});
   r.push_back({"verification.offset_decay_start", {"0", "5"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.offset_decay_end", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
+  r.push_back({"verification.consistency_pairs", {"0", "16"}, {"-1", "17"}, "[0, 16]"});
+  r.push_back({"verification.consistency_min_footprint", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
   r.push_back({"verification.min_footprint_overlap", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
   r.push_back({"verification.footprint_cell", {"0.2", "10"}, {"0.1", "11"}, "[0.2, 10]"});
   r.push_back({"verification.footprint_radius", {"5", "200"}, {"4", "201"}, "[5, 200]"});
@@ -132,6 +134,7 @@ std::vector<Range> ranges() {
   r.push_back({"registration.match_max_points", {"100", "1000000"}, {"0", "1000001"}, "[100, 1000000]"});
   r.push_back({"registration.normal_neighbors", {"5", "100"}, {"4", "101"}, "[5, 100]"});
   r.push_back({"registration.max_correspondence", {"1e-09", "10"}, {"0", "10.5"}, "(0, 10]"});
+  r.push_back({"registration.coarse_correspondence", {"0", "10"}, {"-0.1", "10.5"}, "[0, 10]"});
   r.push_back({"registration.kernel", {"0", "10"}, {"-0.1", "10.5"}, "[0, 10]"});
   r.push_back({"registration.max_iterations", {"1", "500"}, {"0", "501"}, "[1, 500]"});
   r.push_back({"registration.convergence", {"1e-09", "0.1"}, {"0", "0.2"}, "(0, 0.1]"});
@@ -215,8 +218,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 37 other keys, 18 backend.*, 15 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 37 + 18 + 15 + 26);
+  // 8 classes incl. vehicle, 39 other keys, 18 backend.*, 16 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 39 + 18 + 16 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

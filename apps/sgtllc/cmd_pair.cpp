@@ -108,6 +108,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   const size_t guided = numGuided(m);
   std::cout << "associations " << m.associations.size() - guided << ", inliers " << m.inliers.size();
   if (guided > 0) std::cout << " (" << guided << " paired by the pose: guided matching)";
+  if (m.by_consistency) std::cout << "   (pairs chosen by geometric consistency, not the descriptors: algorithm §7.8)";
   if (m.rejection != Rejection::kNone) std::cout << "   (rejected: " << rejectionName(m.rejection) << ")";
   std::cout << "\n";
   const double offset = m.T_match_query.topRightCorner<3, 1>().norm();
@@ -193,6 +194,7 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                               {"associations", m.associations.size() - guided},
                               {"guided_pairs", guided},
                               {"inliers", m.inliers.size()},
+                              {"path", m.by_consistency ? "consistency" : "descriptors"},
                               {"footprint", footprintJson(m.footprint, config.verification)},
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},

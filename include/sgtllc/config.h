@@ -276,6 +276,14 @@ struct VerificationConfig {
   /// class look alike (poles along a street) they pick wrong ones that the pose would have paired. Only with
   /// score_formula overlap, which divides by the graph size: the other formulas count inliers among LA.
   bool guided_matching = true;
+  /// The consistency path (consistent_matching.h, algorithm §7.8): when the descriptors' candidate is not a loop,
+  /// each query node's this many most similar same-class match nodes become hypotheses and their largest
+  /// pairwise-consistent set is verified as RANSAC's would be; 0 = off, as the paper [0, 16]. Only with
+  /// score_formula overlap and use_ransac. [deviation: BENCHMARKS.md "Consistency path"]
+  int consistency_pairs = 16;
+  /// ... and its loop stands only if the footprint check ran (both frames from scans, min_footprint_overlap > 0)
+  /// and gave at least this share (algorithm §7.7, §7.8) [0, 1]. [deviation: BENCHMARKS.md "Consistency path"]
+  double consistency_min_footprint = 0.65;
   /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
   /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: tuned on the urban11 and sub7

@@ -45,6 +45,9 @@ struct MatchResult {
   /// The footprint check under the verified pose (algorithm §7.7); compared = 0 when it did not run (no footprints,
   /// the check off, no pose).
   FootprintOverlap footprint;
+  /// The pairs came from the consistency path (algorithm §7.8), not from the descriptors' LA: `associations` are
+  /// then that path's pairs (and guided ones), score_c is still the descriptors' |LA| / M.
+  bool by_consistency = false;
 };
 
 /// RANSAC parameters of the verification config.
@@ -56,7 +59,8 @@ RansacParams ransacParams(const VerificationConfig& config);
 double offsetWeight(double offset_m, const VerificationConfig& config);
 
 /// Associates nodes, applies the score_c gate, runs RANSAC, fits the pose on its inliers and scales score_t by
-/// offsetWeight of the pose's translation.
+/// offsetWeight of the pose's translation. When that is not a loop and verification.consistency_pairs > 0, the
+/// consistency path (algorithm §7.8) tries again, and its result is returned if it is a loop.
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config);
 
 /// The loop decision for one candidate score: score_t > σ_4 (algorithm §7.4).

@@ -27,3 +27,25 @@ def test_nuscenes_preset_in_the_config():
     assert config.labels.format == sgtllc.LabelFormat.UINT8
     assert config.labeller.source == sgtllc.LabelSource.HYBRID
     assert sgtllc.Config().labels.format == sgtllc.LabelFormat.AUTO
+
+
+def test_label_free_pair_verifies_by_consistency():
+    # Keyframes 1 and 0 from the scans alone: 5 nodes each, RANSAC on the descriptors' pairs fails, the consistency
+    # path (docs/algorithm.md §7.8) verifies 3 nodes whose distances agree; ICP then refines the pose.
+    def scan(i):
+        points = sgtllc.read_kitti_bin(str(SCENE / "velodyne" / f"{i:06d}.bin"))
+        return points, sgtllc.label_scan_ids(points)
+
+    rows = np.loadtxt(SCENE / "poses.txt").reshape(-1, 3, 4)
+    poses = [np.vstack([r, [0, 0, 0, 1]]) for r in rows]
+    reference = np.linalg.inv(poses[0]) @ poses[1]
+    r = sgtllc.compare_pair(*scan(1), *scan(0))
+    assert r.is_loop and r.match.by_consistency
+    assert len(r.match.inliers) >= 3
+    err = sgtllc.pose_error(r.T_match_query, reference)
+    assert err.translation_m < 0.3 and err.rotation_deg < 2.0
+    off = sgtllc.Config()
+    off.verification.consistency_pairs = 0
+    paper = sgtllc.compare_pair(*scan(1), *scan(0), off)
+    assert not paper.is_loop and not paper.match.by_consistency
+    assert paper.rejection == sgtllc.Rejection.RANSAC_FAILED

@@ -364,6 +364,13 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(boolean("verification.guided_matching",
                       "after RANSAC, pair the nodes its pose puts together (score_formula overlap only)",
                       [](Config& c) -> bool& { return c.verification.guided_matching; }));
+  f.push_back(integer<int>("verification.consistency_pairs",
+                           "when the descriptors' pairs give no loop, verify the largest consistent set of each "
+                           "query node's this many most similar same-class nodes; 0 = off",
+                           [](Config& c) -> int& { return c.verification.consistency_pairs; }));
+  f.push_back(number("verification.consistency_min_footprint",
+                     "... and keep its loop only if the footprint check ran and gave at least this share",
+                     [](Config& c) -> double& { return c.verification.consistency_min_footprint; }));
   f.push_back(number("verification.sigma_4", "σ_4: loop iff best score_t > σ_4 (0.1 for MulRan/MCD)",
                      [](Config& c) -> double& { return c.verification.sigma_4; }));
   f.push_back(number("verification.select_margin",

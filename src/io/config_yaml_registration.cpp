@@ -29,6 +29,8 @@ void addRegistrationFields(const BackendFieldMakers& add) {
   integer("normal_neighbors", "neighbours of a target point's normal", [](R& r) -> int& { return r.normal_neighbors; });
   number("max_correspondence", "pair a point only with a target point this close (m)",
          [](R& r) -> double& { return r.max_correspondence; });
+  number("coarse_correspondence", "pairing distance of a first, coarse ICP stage (m); 0 = none",
+         [](R& r) -> double& { return r.coarse_correspondence; });
   number("kernel", "scale of the Cauchy weight on point-to-plane residuals (m); 0 = none",
          [](R& r) -> double& { return r.kernel; });
   integer("max_iterations", "Gauss-Newton iterations at most", [](R& r) -> int& { return r.max_iterations; });

@@ -5,6 +5,7 @@
 // the loop edge's information. Sequential sums in point order keep it deterministic at any thread count.
 #include "sgtllc/registration/icp.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -21,6 +22,7 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 constexpr int kMinPairs = 6;  // six unknowns
+constexpr double kCoarseConvergence = 1e-3;  // m and rad: where the coarse stage hands over to the fine one
 
 /// Unit normals of the target points from the covariance of their k nearest neighbours (smallest eigenvector),
 /// or zero where the neighbourhood is a line or a point (no plane to project on). Computed on first use: the
@@ -175,18 +177,33 @@ Refinement refinePose(const std::vector<Eigen::Vector3f>& query, const std::vect
 
   Eigen::Matrix4d T = T_seed;
   bool converged = false;
-  for (int it = 0; it < config.max_iterations && !converged; ++it) {
-    const Linearisation lin = linearise(query, rows, normal, tree, T, config.max_correspondence, config.kernel);
-    if (lin.pairs < kMinPairs) return finish(RefinementStatus::kTooFewPoints);
-    if (degenerate(lin.H)) return finish(RefinementStatus::kDegenerate);
-    const Vector6d delta = -lin.H.ldlt().solve(lin.g);
-    Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
-    const double angle = delta.tail<3>().norm();
-    if (angle > 0.0) step.topLeftCorner<3, 3>() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
-    step.topRightCorner<3, 1>() = delta.head<3>();
-    T = T * step;
-    out.iterations = it + 1;
-    converged = delta.head<3>().norm() < config.convergence && angle < config.convergence;
+  // A seed from a few node centres can be a metre and some degrees off (sparse sensors, centres of walls seen
+  // from the other side): a coarse stage pulls it in with far pairs, the fine stage then fits at the fine distance
+  // (docs/registration.md).
+  std::vector<double> stages;
+  if (config.coarse_correspondence > config.max_correspondence) stages.push_back(config.coarse_correspondence);
+  stages.push_back(config.max_correspondence);
+  for (size_t stage = 0; stage < stages.size(); ++stage) {
+    const double distance = stages[stage];
+    // The coarse stage only has to bring the pose into the fine stage's reach: it stops at millimetre steps.
+    const double tolerance = stage + 1 < stages.size() ? std::max(config.convergence, kCoarseConvergence)
+                                                        : config.convergence;
+    converged = false;
+    for (int it = 0; it < config.max_iterations && !converged; ++it) {
+      const Linearisation lin = linearise(query, rows, normal, tree, T, distance, config.kernel);
+      if (lin.pairs < kMinPairs) return finish(RefinementStatus::kTooFewPoints);
+      if (degenerate(lin.H)) return finish(RefinementStatus::kDegenerate);
+      const Vector6d delta = -lin.H.ldlt().solve(lin.g);
+      Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
+      const double angle = delta.tail<3>().norm();
+      if (angle > 0.0) {
+        step.topLeftCorner<3, 3>() = Eigen::AngleAxisd(angle, delta.tail<3>() / angle).toRotationMatrix();
+      }
+      step.topRightCorner<3, 1>() = delta.head<3>();
+      T = T * step;
+      ++out.iterations;
+      converged = delta.head<3>().norm() < tolerance && angle < tolerance;
+    }
   }
   // Re-orthonormalise: many small products drift from SO(3) in the last bits.
   const Eigen::Quaterniond q(Eigen::Matrix3d(T.topLeftCorner<3, 3>()));

@@ -21,6 +21,7 @@ void validateRegistrationConfig(const RegistrationConfig& r) {
   checkInt("registration.match_max_points", r.match_max_points, 100, 1000000);
   checkInt("registration.normal_neighbors", r.normal_neighbors, 5, 100);
   checkReal("registration.max_correspondence", r.max_correspondence, {0.0, false}, {10.0});
+  checkReal("registration.coarse_correspondence", r.coarse_correspondence, {0.0}, {10.0});
   checkReal("registration.kernel", r.kernel, {0.0}, {10.0});
   checkInt("registration.max_iterations", r.max_iterations, 1, 500);
   checkReal("registration.convergence", r.convergence, {0.0, false}, {0.1});

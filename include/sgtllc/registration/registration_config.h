@@ -40,6 +40,9 @@ struct RegistrationConfig {
   /// Pairs farther apart join different surfaces: on urban11's loops 1 m left 2.7 cm, 0.5 m 1.6 cm and 0.3 m
   /// 1.2 cm (ground left out; with the ground 0.9 → 0.6 cm). The SVD seed is within a few cm.
   double max_correspondence = 0.3;
+  /// Pairing distance (m) of a first, coarse ICP stage before the stage at max_correspondence; no coarse stage if
+  /// not above max_correspondence [0, 10]. A seed from a few node centres can be a metre and some degrees off.
+  double coarse_correspondence = 1.0;
   /// Scale k (m) of the Cauchy weight 1 / (1 + r²/k²) on point-to-plane residuals r; 0 = unweighted [0, 10]. (On
   /// KITTI 00 4501 → 52, k = 0.1 m moved the result away from the ICP reference: 0.4 → 1.1 cm.)
   double kernel = 0.0;
@@ -51,9 +54,11 @@ struct RegistrationConfig {
   /// refinement fails and the SVD pose is kept [0, 1].
   double min_fitness = 0.3;
   /// The refinement fails (SVD pose kept) if it moves the pose by more than this translation (m) (0, 100] ...
-  double max_translation_change = 0.5;
+  /// A bound on divergence, not on the seed's error: a seed from 3–5 node centres of a 32-beam scan is often
+  /// 0.5–2 m and 2–27° off, and the two ICP stages bring it within 0.3 m / 2° (BENCHMARKS.md, "Fine registration").
+  double max_translation_change = 5.0;
   /// ... or by more than this rotation (degrees) (0, 180].
-  double max_rotation_change_deg = 2.0;
+  double max_rotation_change_deg = 30.0;
   /// Floor of the point-to-plane residual σ (m) in the information matrix (0, 10].
   double information_sigma_min = 0.01;
   /// Scales the information Σ JᵀJ / σ² down (< 1): neighbouring points share one surface and one scan, so they
