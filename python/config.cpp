@@ -158,8 +158,10 @@ void sections(py::module_& m) {
       .def_readwrite("consistency_pairs", &VerificationConfig::consistency_pairs,
                      "when the descriptors' pairs give no loop, verify the largest consistent set of each query "
                      "node's this many most similar same-class nodes; 0 = off")
-      .def_readwrite("consistency_min_footprint", &VerificationConfig::consistency_min_footprint,
-                     "... and keep its loop only if the footprint check ran and gave at least this share")
+      .def_readwrite("weak_inliers", &VerificationConfig::weak_inliers,
+                     "a loop of at most this many inliers needs weak_min_footprint; 0 = no such rule")
+      .def_readwrite("weak_min_footprint", &VerificationConfig::weak_min_footprint,
+                     "footprint share a loop of few inliers, or of the consistency path, needs")
       .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score_t = score_c, pose from all pairs")
       .def_readwrite("sigma_4", &VerificationConfig::sigma_4, "σ_4: a loop iff the best score_t > σ_4")
       .def_readwrite("seed", &VerificationConfig::seed, "RANSAC random seed");

@@ -105,7 +105,8 @@ class VerificationConfig:
     score_formula: ScoreFormula
     guided_matching: bool
     consistency_pairs: int
-    consistency_min_footprint: float
+    weak_inliers: int
+    weak_min_footprint: float
     max_tilt_deg: float
     use_ransac: bool
     sigma_4: float

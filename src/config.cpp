@@ -159,7 +159,8 @@ void Config::validate() const {
                           text(v.offset_decay_start));
   }
   checkInt("verification.consistency_pairs", v.consistency_pairs, 0, 16);
-  checkReal("verification.consistency_min_footprint", v.consistency_min_footprint, {0.0}, {1.0});
+  checkInt("verification.weak_inliers", v.weak_inliers, 0, 1000);
+  checkReal("verification.weak_min_footprint", v.weak_min_footprint, {0.0}, {1.0});
   checkReal("verification.min_footprint_overlap", v.min_footprint_overlap, {0.0}, {1.0});
   checkReal("verification.footprint_cell", v.footprint_cell, {0.2}, {10.0});
   checkReal("verification.footprint_radius", v.footprint_radius, {5.0}, {200.0});

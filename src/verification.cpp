@@ -83,7 +83,11 @@ void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, c
                      MatchResult* result) {
   if (vc.min_footprint_overlap <= 0.0 || query.footprint.empty() || match.footprint.empty()) return;
   result->footprint = footprintOverlap(query.footprint, match.footprint, result->T_match_query);
-  if (result->footprint.compared < kMinFootprintCells || result->footprint.share >= vc.min_footprint_overlap) return;
+  // Three or four nodes of two places agree by chance far more often than five: such weak evidence needs the
+  // structure around it to agree more (BENCHMARKS.md, "Footprint check").
+  const bool weak = result->by_consistency || static_cast<int>(result->inliers.size()) <= vc.weak_inliers;
+  const double needed = weak ? std::max(vc.min_footprint_overlap, vc.weak_min_footprint) : vc.min_footprint_overlap;
+  if (result->footprint.compared < kMinFootprintCells || result->footprint.share >= needed) return;
   result->rejection = Rejection::kFootprint;
   result->score_t = 0.0;
   result->T_match_query = Eigen::Matrix4d::Identity();
@@ -222,8 +226,7 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   // only where the footprints can judge its pose, and by a stricter share (BENCHMARKS.md "Consistency path").
   if (query.footprint.empty() || match.footprint.empty() || vc.min_footprint_overlap <= 0.0) return result;
   MatchResult consistent = matchByConsistency(query, match, config, result.score_c);
-  if (!isLoop(consistent, vc) || consistent.footprint.compared < kMinFootprintCells ||
-      consistent.footprint.share < vc.consistency_min_footprint) {
+  if (!isLoop(consistent, vc) || consistent.footprint.compared < kMinFootprintCells) {
     return result;
   }
   return consistent;

@@ -66,7 +66,7 @@ TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
   ASSERT_EQ(info.status, 0) << info.out;
   EXPECT_NE(info.out.find("format version " + std::to_string(map::kFormatVersion)), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("frames 110 (with poses), first 000000, last 000109"), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("retrieval.histogram_bins: 10"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("retrieval.histogram_bins: 30"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("  KEYS v1  "), std::string::npos) << info.out;
 
   const std::string args = "localize --map " + path("m.sgtmap") + " --nodes " + path("s2/nodes") + " --config " +
@@ -217,7 +217,7 @@ TEST_F(CliMap, RefusesBadMapsWithAMessageNamingTheFile) {
                                path("bins.yaml") + " --out " + path("hits.csv"));
   EXPECT_EQ(other.status, 1);
   EXPECT_NE(other.out.find(path("m.sgtmap") + ": the map was built with another configuration: "
-                           "retrieval.histogram_bins: the map was built with 10, the configuration has 12"),
+                           "retrieval.histogram_bins: the map was built with 30, the configuration has 12"),
             std::string::npos)
       << other.out;
   EXPECT_FALSE(fs::exists(path("hits.csv")));

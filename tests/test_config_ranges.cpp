@@ -93,7 +93,8 @@ std::vector<Range> ranges() {
   r.push_back({"verification.offset_decay_start", {"0", "5"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.offset_decay_end", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"verification.consistency_pairs", {"0", "16"}, {"-1", "17"}, "[0, 16]"});
-  r.push_back({"verification.consistency_min_footprint", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
+  r.push_back({"verification.weak_inliers", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
+  r.push_back({"verification.weak_min_footprint", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
   r.push_back({"verification.min_footprint_overlap", {"0", "1"}, {"-0.1", "1.1"}, "[0, 1]"});
   r.push_back({"verification.footprint_cell", {"0.2", "10"}, {"0.1", "11"}, "[0.2, 10]"});
   r.push_back({"verification.footprint_radius", {"5", "200"}, {"4", "201"}, "[5, 200]"});
@@ -218,8 +219,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 39 other keys, 18 backend.*, 16 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 39 + 18 + 16 + 26);
+  // 8 classes incl. vehicle, 40 other keys, 18 backend.*, 16 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 40 + 18 + 16 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

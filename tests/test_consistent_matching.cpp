@@ -164,7 +164,7 @@ TEST_F(ConsistencyPath, FindsTheRevisitWhereTheDescriptorsDisagree) {
   const MatchResult r = matchFrames(q, m, config);
   ASSERT_TRUE(isLoop(r, config.verification)) << r.inliers.size() << " inliers, rejection " << rejectionName(r.rejection);
   EXPECT_TRUE(r.by_consistency);
-  EXPECT_GE(r.footprint.share, config.verification.consistency_min_footprint);
+  EXPECT_GE(r.footprint.share, config.verification.weak_min_footprint);
   const test::PoseError e = test::poseError(r.T_match_query, T_);
   EXPECT_LT(e.translation_m, 0.05);
   EXPECT_LT(e.rotation_deg, 0.1);

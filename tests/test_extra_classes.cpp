@@ -337,8 +337,8 @@ TEST_F(VehicleRevisit, DetectorStoresRetrievalKeysOfTheLargerSize) {
     const LabelMap labels(config.labels);
     detector.process(io::readNodesTxt(path("match.txt"), labels));
     const FrameResult r = detector.process(io::readNodesTxt(path("query.txt"), labels));
-    // Histogram: 36 class pairs × 10 bins; G2, C = 8: 8³.
-    EXPECT_EQ(detector.database().globalDimension(), key == RetrievalKey::kGlobalDescriptor ? 512 : 360);
+    // Histogram: 36 class pairs × 30 bins; G2, C = 8: 8³.
+    EXPECT_EQ(detector.database().globalDimension(), key == RetrievalKey::kGlobalDescriptor ? 512 : 1080);
     ASSERT_TRUE(r.is_loop);
     EXPECT_EQ(r.loop()->frame, 0);
   }

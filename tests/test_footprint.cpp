@@ -151,5 +151,29 @@ TEST(Footprint, AVerifiedPoseThatTheStructureContradictsIsRejected) {
   EXPECT_EQ(nodes_only.match.score_t, loop.match.score_t);
 }
 
+TEST(Footprint, WeakEvidenceNeedsTheHigherShare) {
+  // 4501 → 52: 16 inliers, share 0.966. Counted as weak (weak_inliers ≥ 16) it needs weak_min_footprint: 0.97
+  // rejects it, 0.96 keeps it; with one inlier more than weak_inliers allows, 0.97 does not apply.
+  const LabeledCloud q = test::kittiScan("004501"), m = test::kittiScan("000052");
+  Config config;
+  config.registration.pair = false;
+  const PairResult base = comparePair(q, m, config);
+  ASSERT_TRUE(base.is_loop);
+  ASSERT_EQ(base.match.inliers.size(), 16u);
+  ASSERT_NEAR(base.match.footprint.share, 0.966, 0.0005);
+  config.verification.weak_inliers = 16;
+  config.verification.weak_min_footprint = 0.97;
+  const PairResult weak = comparePair(q, m, config);
+  EXPECT_FALSE(weak.is_loop);
+  EXPECT_EQ(weak.match.rejection, Rejection::kFootprint);
+  config.verification.weak_min_footprint = 0.96;
+  EXPECT_TRUE(comparePair(q, m, config).is_loop);
+  config.verification.weak_inliers = 15;
+  config.verification.weak_min_footprint = 0.97;
+  const PairResult strong = comparePair(q, m, config);
+  EXPECT_TRUE(strong.is_loop);
+  EXPECT_EQ(strong.match.score_t, base.match.score_t);
+}
+
 }  // namespace
 }  // namespace sgtllc

@@ -197,7 +197,7 @@ TEST(Relocalizer, RefusesAMapOfAnotherConfiguration) {
   } catch (const MapError& e) {
     EXPECT_EQ(e.problem(), MapProblem::kIncompatible);
     EXPECT_NE(std::string(e.what()).find("m.sgtmap: "), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("retrieval.histogram_bins: the map was built with 10, the configuration has 12"),
+    EXPECT_NE(std::string(e.what()).find("retrieval.histogram_bins: the map was built with 30, the configuration has 12"),
               std::string::npos)
         << e.what();
   }

@@ -53,12 +53,14 @@ TEST(ClassPairIndex, EnumeratesUnorderedPairsOnce) {
 }
 
 TEST(DistanceHistogram, HandComputedVotes) {
-  // Default bins: 2 m wide (20 m / 10), centred at 1, 3, 5, … m. Building–building 3 m: on the centre of bin 1.
+  // Bins 2 m wide (20 m / 10, as the defaults' 60 m / 30), centred at 1, 3, 5, … m. Building–building 3 m: on the centre of bin 1.
   // Building–pole 4 m: half way between bins 1 and 2. Building–pole 5 m: on the centre of bin 2. Pole–trunk
   // 0.5 m: below the first centre, all in bin 0. Building–trunk 4.5 m and √29.25 m: split by hand below.
   const std::vector<Node> far = {{{0, 0, 0}, kBuilding}, {{3, 0, 0}, kBuilding}, {{0, 4, 0}, kPole},
                                  {{0, 4.5, 0}, kTrunk}};
   RetrievalConfig rc;
+  rc.histogram_range = 20.0;
+  rc.histogram_bins = 10;
   const std::vector<float> key = histogram(far, rc);
   ASSERT_EQ(key.size(), 280u);
   // Raw votes (before the L2 scaling), cell = 10 · pair + bin.
@@ -159,10 +161,10 @@ TEST(RetrievalKey, DetectorStoresTheConfiguredKey) {
   Config config;
   LoopDetector hist(config);
   hist.process(nodes);
-  EXPECT_EQ(hist.database().globalDimension(), 280);
+  EXPECT_EQ(hist.database().globalDimension(), 28 * 30);  // 28 class pairs × 30 bins
   const std::vector<float> expected = computeDistanceHistogram(buildGraph(nodes, config.graph), config.retrieval);
   EXPECT_TRUE(std::equal(expected.begin(), expected.end(), hist.database().global(0)));
-  EXPECT_EQ(retrieval::retrievalKeySize(config), 280);
+  EXPECT_EQ(retrieval::retrievalKeySize(config), 840);
 
   config.retrieval.key = RetrievalKey::kGlobalDescriptor;
   LoopDetector g2(config);
@@ -178,8 +180,8 @@ TEST(RetrievalKey, DetectorStoresTheConfiguredKey) {
   with_vehicle[0].label = 7;
   LoopDetector objects(eight);
   objects.process(with_vehicle);
-  EXPECT_EQ(objects.database().globalDimension(), 360);
-  EXPECT_EQ(retrieval::retrievalKeySize(eight), 360);
+  EXPECT_EQ(objects.database().globalDimension(), 36 * 30);
+  EXPECT_EQ(retrieval::retrievalKeySize(eight), 1080);
 }
 
 }  // namespace

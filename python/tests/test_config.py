@@ -19,7 +19,7 @@ def test_nested_fields_change_the_config():
     c.cluster.classes[0].radius = 2.0
     c.labels.custom_map[10] = 0
     c.retrieval.method = sgtllc.RetrievalMethod.KD_TREE
-    assert c.retrieval.key == sgtllc.RetrievalKey.DISTANCE_HISTOGRAM and c.retrieval.histogram_bins == 10
+    assert c.retrieval.key == sgtllc.RetrievalKey.DISTANCE_HISTOGRAM and c.retrieval.histogram_bins == 30
     c.retrieval.key = sgtllc.RetrievalKey.GLOBAL_DESCRIPTOR
     c.retrieval.histogram_range = 25.0
     c.backend.solver.max_iterations = 7

@@ -130,7 +130,7 @@ def test_bad_maps_are_refused(tmp_path):
         sgtllc.load_map(str(tmp_path / "cut.sgtmap"))
     other = config()
     other.retrieval.histogram_bins = 12
-    with pytest.raises(sgtllc.Error, match="retrieval.histogram_bins: the map was built with 10"):
+    with pytest.raises(sgtllc.Error, match="retrieval.histogram_bins: the map was built with 30"):
         sgtllc.load_map(str(path), other)
     with pytest.raises(FileNotFoundError):
         sgtllc.load_map(str(tmp_path / "none.sgtmap"))

@@ -368,9 +368,12 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                            "when the descriptors' pairs give no loop, verify the largest consistent set of each "
                            "query node's this many most similar same-class nodes; 0 = off",
                            [](Config& c) -> int& { return c.verification.consistency_pairs; }));
-  f.push_back(number("verification.consistency_min_footprint",
-                     "... and keep its loop only if the footprint check ran and gave at least this share",
-                     [](Config& c) -> double& { return c.verification.consistency_min_footprint; }));
+  f.push_back(integer<int>("verification.weak_inliers",
+                           "a loop of at most this many inliers needs weak_min_footprint (0 = no such rule)",
+                           [](Config& c) -> int& { return c.verification.weak_inliers; }));
+  f.push_back(number("verification.weak_min_footprint",
+                     "footprint share a loop of few inliers, or of the consistency path, needs",
+                     [](Config& c) -> double& { return c.verification.weak_min_footprint; }));
   f.push_back(number("verification.sigma_4", "σ_4: loop iff best score_t > σ_4 (0.1 for MulRan/MCD)",
                      [](Config& c) -> double& { return c.verification.sigma_4; }));
   f.push_back(number("verification.select_margin",
