@@ -177,6 +177,30 @@ TEST_F(ConsistencyPath, FindsTheRevisitWhereTheDescriptorsDisagree) {
   EXPECT_EQ(r.inliers.size(), (query_.size() + 2) / 3);
 }
 
+TEST_F(ConsistencyPath, AMirrorImageIsConsistentButNotALoop) {
+  // Frame 52's nodes mirrored (y → −y): every distance is kept, so the pairs of each node with its mirror image
+  // are one consistent set, but no rotation maps a scene onto its mirror image: the nearest one is upside down
+  // (the upright check) and leaves residuals of metres.
+  std::vector<Node> mirrored = query_;
+  for (Node& n : mirrored) n.centre.y() = -n.centre.y();
+  std::vector<Eigen::Vector3d> a, b;
+  std::vector<int> ids;
+  for (size_t k = 0; k < query_.size(); ++k) {
+    a.push_back(query_[k].centre);
+    b.push_back(mirrored[k].centre);
+    ids.push_back(static_cast<int>(k));
+  }
+  EXPECT_EQ(largestConsistentSet(a, b, ids, ids, 0.8).size(), query_.size());
+  const LabeledCloud scan = test::kittiScan("000052");
+  const Config config;
+  DescribedFrame q = describeFrame(query_, config.graph, config.descriptor);
+  DescribedFrame m = describeFrame(mirrored, config.graph, config.descriptor);
+  q.footprint = computeFootprint(scan, LabelMap(config.labels), config.verification);
+  m.footprint = q.footprint;
+  const MatchResult r = matchFrames(q, m, config);
+  EXPECT_FALSE(isLoop(r, config.verification)) << r.inliers.size() << " inliers";
+}
+
 TEST_F(ConsistencyPath, NeedsAFootprintToJudgeIt) {
   const DescribedFrame q = describeFrame(query_, config_.graph, config_.descriptor);
   const DescribedFrame m = describeFrame(match_, config_.graph, config_.descriptor);
