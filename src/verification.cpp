@@ -84,7 +84,7 @@ void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, c
   if (vc.min_footprint_overlap <= 0.0 || query.footprint.empty() || match.footprint.empty()) return;
   result->footprint = footprintOverlap(query.footprint, match.footprint, result->T_match_query);
   // Three or four nodes of two places agree by chance far more often than five: such weak evidence needs the
-  // structure around it to agree more (BENCHMARKS.md, "Footprint check").
+  // structure around it to agree more (BENCHMARKS.md, "Weak evidence").
   const bool weak = result->by_consistency || static_cast<int>(result->inliers.size()) <= vc.weak_inliers;
   const double needed = weak ? std::max(vc.min_footprint_overlap, vc.weak_min_footprint) : vc.min_footprint_overlap;
   if (result->footprint.compared < kMinFootprintCells || result->footprint.share >= needed) return;

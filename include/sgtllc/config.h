@@ -287,11 +287,11 @@ struct VerificationConfig {
   /// Weak evidence (algorithm §7.7): a loop verified by at most this many inliers must reach weak_min_footprint
   /// instead of min_footprint_overlap; 0 = no such rule [0, 1000]. On the simulated 32-beam drives nearly every
   /// false candidate beyond 20 m had 3 or 4 inliers and a footprint share of 0.5–0.65, true ones 0.65 and more.
-  /// [deviation: BENCHMARKS.md "Footprint check"]
+  /// [deviation: BENCHMARKS.md "Weak evidence"]
   int weak_inliers = 4;
   /// ... the footprint share such a loop, and every loop of the consistency path, needs (for the consistency
   /// path the check must also have run: both frames from scans, min_footprint_overlap > 0) [0, 1].
-  /// [deviation: BENCHMARKS.md "Consistency path", "Footprint check"]
+  /// [deviation: BENCHMARKS.md "Consistency path", "Weak evidence"]
   double weak_min_footprint = 0.65;
   /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
