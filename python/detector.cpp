@@ -20,7 +20,8 @@ namespace {
 /// each call holds the detector's own lock.
 struct PyLoopDetector {
   explicit PyLoopDetector(const Config& config) : detector(config) {}
-  PyLoopDetector(const Config& config, FrameDatabase database) : detector(config, std::move(database)) {}
+  PyLoopDetector(const Config& config, FrameDatabase database, std::vector<Footprint> footprints)
+      : detector(config, std::move(database), std::move(footprints)) {}
   LoopDetector detector;
   std::mutex mutex;
 };
@@ -40,7 +41,8 @@ void bindDetector(py::module_& m) {
            "Raises ConfigError if the configuration is invalid. The detector keeps a copy of it.")
       .def(py::init([](const map::Map& saved, const Config& config) {
              map::checkCompatible(saved, config, "map");
-             return std::make_unique<PyLoopDetector>(config, copyMap(saved).database);
+             map::Map copy = copyMap(saved);
+             return std::make_unique<PyLoopDetector>(config, std::move(copy.database), std::move(copy.footprints));
            }),
            py::arg("map"), py::arg("config") = Config{},
            "Resumes over the frames of a Map: the next frame is numbered map.num_frames and is searched as if\n"
@@ -94,7 +96,8 @@ void bindDetector(py::module_& m) {
              if (!poses.is_none()) frame_poses = rigidPosesFromArray(poses, "poses");
              std::lock_guard<std::mutex> lock(d.mutex);
              return std::make_shared<map::Map>(map::makeMap(d.detector.database(), d.detector.config(),
-                                                            std::move(frame_names), std::move(frame_poses)));
+                                                            std::move(frame_names), std::move(frame_poses),
+                                                            d.detector.footprints()));
            },
            py::arg("names") = py::none(), py::arg("poses") = py::none(),
            "The stored frames as a Map (copied): names (one per frame; default '0', '1', ...) and optional\n"

@@ -18,6 +18,7 @@ map::Map copyMap(const map::Map& m) {
   copy.config = m.config;
   copy.names = m.names;
   copy.poses = m.poses;
+  copy.footprints = m.footprints;
   for (int f = 0; f < m.size(); ++f) {
     const float* key = m.database.global(f);
     copy.database.add(StoredFrame{m.database.nodes(f), std::vector<float>(key, key + m.database.globalDimension())});
@@ -53,6 +54,8 @@ void bindMap(py::module_& m) {
       .def_property_readonly("num_frames", &map::Map::size, "frames in the map")
       .def_property_readonly("names", [](const map::Map& mp) { return mp.names; }, "frame names, in frame order")
       .def_property_readonly("has_poses", &map::Map::hasPoses, "whether the frames have poses")
+      .def_property_readonly("has_footprints", [](const map::Map& mp) { return !mp.footprints.empty(); },
+                             "whether the frames keep their footprints (the footprint check in relocalization)")
       .def_property_readonly("poses",
                              [](const map::Map& mp) -> py::object {
                                if (!mp.hasPoses()) return py::none();

@@ -335,6 +335,7 @@ class Map:
     num_frames: int
     names: list[str]
     has_poses: bool
+    has_footprints: bool
     poses: Optional[np.ndarray]
     config: list[Tuple[str, str]]
     def nodes(self, frame: int) -> Nodes: ...

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Writes fuzz/seeds/map/ with the given sgtllc: two 3-frame maps of fixed synthetic node files (8 nodes per frame,
-# SemanticKITTI ids of the seven paper classes), one without poses and one with them (`--odometry`). Run it whenever the map format
+# SemanticKITTI ids of the seven paper classes), one without poses and one with them (`--odometry`), and a 3-frame
+# map of scans (the first 3,000 points of the bundled KITTI scans 52, 88 and 850) with small footprints (FTPR). Run it whenever the map format
 # version changes (docs/map-format.md, "Versions"), so the fuzzer starts from files this build reads.
 #   scripts/make-map-seeds.sh build/apps/sgtllc/sgtllc
 set -eu
@@ -18,4 +19,16 @@ printf 'Tr: 1 0 0 0 0 1 0 0 0 0 1 0\n' > "$work/calib.txt"
 "$cli" run --nodes "$work/nodes" --save-map "$out/three_frames.sgtmap" --force > /dev/null 2>&1
 "$cli" run --nodes "$work/nodes" --odometry "$work/poses.txt" --calib "$work/calib.txt" \
   --save-map "$out/three_frames_poses.sgtmap" --force > /dev/null 2>&1 2>&1
+here=$(dirname "$0")/..
+mkdir -p "$work/scans/velodyne" "$work/scans/labels"
+k=0
+for f in 000052 000088 000850; do
+  head -c 48000 "$here/data/kitti/00/velodyne/$f.bin" > "$work/scans/velodyne/00000$k.bin"
+  head -c 12000 "$here/data/kitti/00/labels/$f.label" > "$work/scans/labels/00000$k.label"
+  k=$((k + 1))
+done
+# 5 m footprints of 1 m cells: 100 bits a frame, so the seed stays small.
+printf 'verification:\n  footprint_radius: 5\n  footprint_cell: 1\n' > "$work/small.yaml"
+"$cli" run "$work/scans" --config "$work/small.yaml" --save-map "$out/three_scans_footprints.sgtmap" --force > /dev/null 2>&1
 "$cli" map info "$out/three_frames_poses.sgtmap" | head -3
+"$cli" map info "$out/three_scans_footprints.sgtmap" | head -4

@@ -30,8 +30,7 @@ const Config& validated(const Config& config) {
 /// the urban and suburban simulations' queries find ~85 % of their candidates here.
 constexpr size_t kDescribedCacheFrames = 256;
 
-/// The stored frames' footprints (LoopDetector::footprints) where the searcher has them; a relocalizer's map
-/// frames have none.
+/// The stored frames' footprints (LoopDetector::footprints, a map's Map::footprints) where the searcher has them.
 using Footprints = std::vector<Footprint>;
 
 void search(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database, int last,
@@ -51,7 +50,12 @@ LoopDetector::~LoopDetector() = default;
 LoopDetector::LoopDetector(LoopDetector&&) noexcept = default;
 LoopDetector& LoopDetector::operator=(LoopDetector&&) noexcept = default;
 
-LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopDetector(config) {
+LoopDetector::LoopDetector(const Config& config, FrameDatabase database, std::vector<Footprint> footprints)
+    : LoopDetector(config) {
+  if (!footprints.empty() && footprints.size() != static_cast<size_t>(database.size())) {
+    throw Error("LoopDetector: " + std::to_string(footprints.size()) + " footprints for " +
+                std::to_string(database.size()) + " frames");
+  }
   if (database.size() > 0 && database.globalDimension() != retrieval::retrievalKeySize(config_)) {
     throw Error("LoopDetector: the database's keys have " + std::to_string(database.globalDimension()) +
                 " entries, the configuration's " + std::to_string(retrieval::retrievalKeySize(config_)) +
@@ -61,8 +65,10 @@ LoopDetector::LoopDetector(const Config& config, FrameDatabase database) : LoopD
   database_.setSearch(config_.retrieval, config_.threads);
   // The resumed frames have no registration clouds: their loops keep the SVD pose (as frames given as nodes).
   for (int f = 0; f < database_.size(); ++f) clouds_.add(CompactCloud{});
-  footprints_.resize(static_cast<size_t>(database_.size()));  // and no footprints: their candidates go unchecked
-  footprint_bytes_ = footprints_.size() * sizeof(Footprint);
+  footprints_ = std::move(footprints);
+  footprints_.resize(static_cast<size_t>(database_.size()));  // none given: their candidates go unchecked
+  footprint_bytes_ = 0;
+  for (const Footprint& f : footprints_) footprint_bytes_ += sizeof(Footprint) + f.bytes();
 }
 
 Footprint LoopDetector::footprint(const LabeledCloud& cloud) const {
@@ -135,8 +141,12 @@ FrameResult LoopDetector::processNodes(std::vector<Node> nodes, Footprint footpr
 }
 
 void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database,
-                    int last, const Config& config, FrameResult* result) {
-  search(query, key, database, last, config, result, nullptr, nullptr);
+                    int last, const Config& config, FrameResult* result, const std::vector<Footprint>* footprints) {
+  if (footprints && footprints->size() != static_cast<size_t>(database.size())) {
+    throw Error("searchDatabase: " + std::to_string(footprints->size()) + " footprints for " +
+                std::to_string(database.size()) + " frames");
+  }
+  search(query, key, database, last, config, result, nullptr, footprints);
 }
 
 namespace {

@@ -67,6 +67,7 @@ TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
   EXPECT_NE(info.out.find("format version " + std::to_string(map::kFormatVersion)), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("frames 110 (with poses), first 000000, last 000109"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("retrieval.histogram_bins: 30"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("\nfootprints 0 of 110 frames\n"), std::string::npos) << info.out;  // node files: none
   EXPECT_NE(info.out.find("  KEYS v1  "), std::string::npos) << info.out;
 
   const std::string args = "localize --map " + path("m.sgtmap") + " --nodes " + path("s2/nodes") + " --config " +

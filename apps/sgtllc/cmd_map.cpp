@@ -1,4 +1,5 @@
 // `sgtllc map info MAP`: what a map file holds (docs/map-format.md).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -23,6 +24,8 @@ void mapInfo(const std::string& path, bool json) {
   size_t nodes = 0;
   for (int f = 0; f < m.size(); ++f) nodes += m.database.nodes(f).size();
   const double per_frame = m.size() ? static_cast<double>(layout.file_bytes) / m.size() : 0.0;
+  const auto footprints = std::count_if(m.footprints.begin(), m.footprints.end(),
+                                        [](const Footprint& f) { return !f.empty(); });
   if (json) {
     Json sections = Json::array();
     for (const map::SectionInfo& s : layout.sections) {
@@ -35,6 +38,7 @@ void mapInfo(const std::string& path, bool json) {
                            {"bytes", layout.file_bytes},
                            {"frames", m.size()},
                            {"poses", m.hasPoses()},
+                           {"footprints", footprints},
                            {"nodes", nodes},
                            {"key_length", m.size() ? m.database.globalDimension() : 0},
                            {"bytes_per_frame", per_frame},
@@ -54,6 +58,8 @@ void mapInfo(const std::string& path, bool json) {
               << escapeContent(m.names.back(), io::kNameBytes) << "\n"
               << "nodes " << nodes << " (" << fixed(static_cast<double>(nodes) / m.size(), 1) << " per frame), key "
               << m.database.globalDimension() << " floats, " << fixed(per_frame, 0) << " bytes per frame";
+    // Relocalization checks a candidate's structure only where its frame kept a footprint (algorithm §7.7).
+    std::cout << "\nfootprints " << footprints << " of " << m.size() << " frames";
   }
   std::cout << "\nconfiguration fingerprint " << hex(layout.fingerprint) << "\nsections:\n";
   for (const map::SectionInfo& s : layout.sections) {

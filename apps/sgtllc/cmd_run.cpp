@@ -157,7 +157,8 @@ void runSequence(const RunOptions& o) {
   if (!o.save_map.empty()) {
     std::vector<std::string> names;
     for (size_t i = 0; i < source.size(); ++i) names.push_back(source.name(i));
-    map::writeMapFile(o.save_map, map::makeMap(detector.database(), config, std::move(names), std::move(map_poses)),
+    map::writeMapFile(o.save_map, map::makeMap(detector.database(), config, std::move(names), std::move(map_poses),
+                                                   detector.footprints()),
                       io::overwriteIf(o.force));
   }
 

@@ -48,8 +48,10 @@ std::vector<Hit> localizeSequence(const eval::FrameSource& source, const map::Re
                   "another session of the same place, or build the map from another one");
     }
     // streamFrames calls in frame order, so the tracker sees the stream as it was recorded.
-    Hit& h = hits.emplace_back(Hit{source.name(index), "", tracker ? tracker->localize(std::move(frame.nodes))
-                                                                   : relocalizer.localize(std::move(frame.nodes))});
+    Hit& h = hits.emplace_back(
+        Hit{source.name(index), "",
+            tracker ? tracker->localize(std::move(frame.nodes), std::move(frame.footprint))
+                    : relocalizer.localize(std::move(frame.nodes), std::move(frame.footprint))});
     h.r.search.timing.extraction_ms = frame.extraction_ms;
     if (h.r.map_frame >= 0) h.map_frame = m.names[static_cast<size_t>(h.r.map_frame)];
     on_hit(index, h);

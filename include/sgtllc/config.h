@@ -324,7 +324,7 @@ struct VerificationConfig {
   /// under its pose, fewer than this share of the query's structure cells land on or next to the match's (with at
   /// least 20 cells compared); 0 = off, as the paper [0, 1]. Few nodes (a sparse sensor: 5–15 a frame) can agree
   /// by chance between two places with similar objects; the walls and vegetation around them rarely do. Needs the
-  /// scans' points: frames given as nodes, and the frames of a loaded map, are not checked. [deviation:
+  /// scans' points: frames given as nodes are not checked (a map file keeps its frames' footprints). [deviation:
   /// BENCHMARKS.md "Footprint check"]
   double min_footprint_overlap = 0.5;
   double footprint_cell = 0.5;     ///< side of a footprint cell (m) [0.2, 10]

@@ -82,9 +82,11 @@ class LoopDetector {
   LoopDetector& operator=(LoopDetector&&) noexcept;
   /// Resumes a detector over the frames of @p database (e.g. a loaded map, map/map.h): the next frame is numbered
   /// database.size(), and searching proceeds exactly as if those frames had been processed by this detector. The
-  /// resumed frames have no registration clouds, so with registration.online their loops keep the SVD pose. Throws
-  /// sgtllc::Error if the database's key length differs from the configuration's (retrievalKeySize).
-  LoopDetector(const Config& config, FrameDatabase database);
+  /// resumed frames have no registration clouds, so with registration.online their loops keep the SVD pose. Their
+  /// @p footprints (one per frame, empty where none, or none at all: map/map.h) keep the footprint check. Throws
+  /// sgtllc::Error if the database's key length differs from the configuration's (retrievalKeySize), or the
+  /// footprints are neither none nor one per frame.
+  LoopDetector(const Config& config, FrameDatabase database, std::vector<Footprint> footprints = {});
 
   /// Processes a labelled scan (points in the sensor frame). Throws sgtllc::Error if the points and labels
   /// differ in length.
@@ -135,9 +137,12 @@ class LoopDetector {
 /// @p database: fills result->candidates (ascending frame index), best, lateral, is_loop and the retrieval and
 /// verification times; nothing is stored. @p query is describeFrame of the query without its global descriptor
 /// and @p key its retrieval key (computeRetrievalKey). The online detector and the relocalizer (map/relocalizer.h)
-/// both search through it. Uses config.threads; the result does not depend on it.
+/// both search through it. Uses config.threads; the result does not depend on it. @p footprints: the stored
+/// frames' footprints (one per database frame, empty where a frame has none) for the footprint check and the
+/// consistency path (algorithm §7.7, §7.8), with query.footprint; nullptr = none.
 void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, const FrameDatabase& database,
-                    int last, const Config& config, FrameResult* result);
+                    int last, const Config& config, FrameResult* result,
+                    const std::vector<Footprint>* footprints = nullptr);
 
 /// Result of comparing two frames directly.
 struct PairResult {

@@ -95,6 +95,19 @@ void checkFrames(const Map& map, const std::string& source) {
   if (!map.poses.empty() && map.poses.size() != n) {
     invalid(std::to_string(map.poses.size()) + " poses for " + std::to_string(n) + " frames (all or none)");
   }
+  if (!map.footprints.empty() && map.footprints.size() != n) {
+    invalid(std::to_string(map.footprints.size()) + " footprints for " + std::to_string(n) + " frames (all or none)");
+  }
+  for (size_t f = 0; f < map.footprints.size(); ++f) {
+    const Footprint& fp = map.footprints[f];
+    if (fp.empty()) continue;
+    const size_t side = 2 * static_cast<size_t>(std::max(fp.half, 0));
+    if (fp.dilated || !(fp.cell > 0.0f) || !std::isfinite(fp.cell) || fp.half <= 0 || fp.half > kMaxFootprintHalf ||
+        fp.bits.size() != (side * side + 63) / 64) {
+      invalid("the footprint of frame '" + map.names[f] + "' is not a footprint grid (dilated, or its cell, size "
+              "or bits do not agree)");
+    }
+  }
   std::unordered_set<std::string_view> seen;
   for (const std::string& name : map.names) {
     if (name.empty()) invalid("a frame has an empty name");
@@ -115,11 +128,14 @@ void checkFrames(const Map& map, const std::string& source) {
 }
 
 Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std::string> names,
-            std::vector<Eigen::Matrix4d> poses) {
+            std::vector<Eigen::Matrix4d> poses, std::vector<Footprint> footprints) {
   Map map;
   map.config = mapConfig(config);
   map.names = std::move(names);
   map.poses = std::move(poses);
+  // A map of frames that all lack one (node input, the check off) stores no footprint section.
+  const bool any = std::any_of(footprints.begin(), footprints.end(), [](const Footprint& f) { return !f.empty(); });
+  if (any) map.footprints = std::move(footprints);
   map.database = FrameDatabase(config.retrieval, config.threads);
   for (int f = 0; f < database.size(); ++f) {
     const float* key = database.global(f);

@@ -125,7 +125,8 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   if (fingerprint(*parts.config) != print) fail(MapProblem::kCorrupted, "corrupted map: configuration fingerprint mismatch");
   const size_t n = parts.names->size();
   auto& [dim, keys] = *parts.keys;
-  if (parts.nodes->size() != n || keys.size() / dim != n || (parts.poses && parts.poses->size() != n)) {
+  if (parts.nodes->size() != n || keys.size() / dim != n || (parts.poses && parts.poses->size() != n) ||
+      (parts.footprints && parts.footprints->size() != n)) {
     fail(MapProblem::kCorrupted, "corrupted map: the sections disagree on the frame count");
   }
 
@@ -133,6 +134,7 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   map.config = std::move(*parts.config);
   map.names = std::move(*parts.names);
   if (parts.poses) map.poses = std::move(*parts.poses);
+  if (parts.footprints) map.footprints = std::move(*parts.footprints);
   RetrievalConfig search;
   search.method = parts.ivf ? RetrievalMethod::kIvf : method;
   map.database = FrameDatabase(search);

@@ -63,18 +63,29 @@ std::string encodeMap(const Map& map, const std::string& source) {
   for (int f = 0; f < db.size(); ++f) keys.append(reinterpret_cast<const char*>(db.global(f)), sizeof(float) * dim);
   const std::optional<IvfState> state = db.ivfState();
   const std::string ivf = state ? encodeIvf(*state, dim) : std::string();
+  std::string footprints;
+  if (!map.footprints.empty()) {
+    put<uint64_t>(footprints, n);
+    for (const Footprint& f : map.footprints) {
+      put<float>(footprints, f.empty() ? 0.0f : f.cell);
+      put<int32_t>(footprints, f.empty() ? 0 : f.half);
+      for (uint64_t word : f.bits) put<uint64_t>(footprints, word);
+    }
+  }
   std::string body;
-  body.reserve(conf.size() + names.size() + poses.size() + nodes.size() + keys.size() + 5 * 20);
+  body.reserve(conf.size() + names.size() + poses.size() + nodes.size() + keys.size() + ivf.size() +
+               footprints.size() + 7 * 20);
   putSection(body, "CONF", conf);
   putSection(body, "FRMS", names);
   if (map.hasPoses()) putSection(body, "POSE", poses);
   putSection(body, "NODE", nodes);
   putSection(body, "KEYS", keys);
   if (state) putSection(body, "IVFS", ivf);
+  if (!footprints.empty()) putSection(body, "FTPR", footprints);
 
   std::string out(kMagic);
   put<uint32_t>(out, kFormatVersion);
-  put<uint32_t>(out, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0));
+  put<uint32_t>(out, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (footprints.empty() ? 0 : 1));
   put<uint64_t>(out, kHeaderBytes + body.size());
   put<uint64_t>(out, fingerprint(map.config));
   put<uint32_t>(out, 0);  // flags: none so far

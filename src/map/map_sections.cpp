@@ -76,9 +76,36 @@ void readKeys(Reader& r, Parts& parts) {
 
 void readIvf(Reader& r, Parts& parts) { parts.ivf = readIvfState(r); }
 
+void readFootprints(Reader& r, Parts& parts) {
+  // Each frame takes at least its cell and half (8 bytes); a grid's words are counted against the bytes left.
+  const size_t n = r.count(sizeof(float) + sizeof(int32_t));
+  std::vector<Footprint> frames;  // grown as frames parse: a damaged count must not allocate before the checksum
+  for (size_t f = 0; f < n; ++f) {
+    Footprint fp;
+    const float cell = r.get<float>();
+    const int32_t half = r.get<int32_t>();
+    if (half != 0) {
+      if (half < 0 || half > kMaxFootprintHalf || !(cell > 0.0f) || !std::isfinite(cell)) {
+        r.fail("a footprint grid of " + std::to_string(half) + " half-cells");
+      }
+      const uint64_t side = 2 * static_cast<uint64_t>(half);
+      const uint64_t words = (side * side + 63) / 64;
+      if (words > r.remaining() / sizeof(uint64_t)) r.fail("a footprint does not fit in the section");
+      fp.cell = cell;
+      fp.half = half;
+      fp.bits.resize(words);
+      for (uint64_t& w : fp.bits) w = r.get<uint64_t>();
+    } else if (cell != 0.0f) {
+      r.fail("an empty footprint with a cell size");
+    }
+    frames.push_back(std::move(fp));
+  }
+  parts.footprints = std::move(frames);
+}
+
 constexpr SectionKind kSections[] = {
     {"CONF", readConfig}, {"FRMS", readNames}, {"POSE", readPoses}, {"NODE", readNodes}, {"KEYS", readKeys},
-    {"IVFS", readIvf}};
+    {"IVFS", readIvf}, {"FTPR", readFootprints}};
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 
 #include "map/map_bytes.h"
 #include "sgtllc/database.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/map/map.h"
 
 namespace sgtllc::map::detail {
@@ -23,6 +24,7 @@ struct Parts {
   std::optional<std::vector<std::vector<Node>>> nodes;
   std::optional<std::pair<uint32_t, std::vector<float>>> keys;  // dimension, row-major keys
   std::optional<IvfState> ivf;                                   // a trained inverted file (retrieval.method ivf)
+  std::optional<std::vector<Footprint>> footprints;              // one per frame (empty ones where none)
 };
 
 struct SectionKind {

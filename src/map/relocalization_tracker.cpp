@@ -34,8 +34,8 @@ void RelocalizationTracker::reset() {
   since_last_ = 0;
 }
 
-Relocalization RelocalizationTracker::localize(std::vector<Node> nodes) {
-  return track(relocalizer_.localize(std::move(nodes)));
+Relocalization RelocalizationTracker::localize(std::vector<Node> nodes, Footprint footprint) {
+  return track(relocalizer_.localize(std::move(nodes), std::move(footprint)));
 }
 
 Relocalization RelocalizationTracker::track(Relocalization answer) {

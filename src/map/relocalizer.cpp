@@ -60,7 +60,8 @@ Relocalization Relocalizer::localize(const LabeledCloud& cloud) const {
   NodeExtractionResult extracted = extractor_.extract(cloud);
   const double extraction_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  Relocalization r = localize(std::move(extracted.nodes));
+  Relocalization r = localize(std::move(extracted.nodes),
+                              computeFootprint(cloud, extractor_.labelMap(), config_.verification));
   r.search.extraction = extracted.stats;
   r.search.timing.extraction_ms = extraction_ms;
   return r;
@@ -96,17 +97,19 @@ int Relocalizer::nearestMapFrame(const Eigen::Vector3d& at) const {
   return nearest;
 }
 
-Relocalization Relocalizer::localize(std::vector<Node> nodes) const {
+Relocalization Relocalizer::localize(std::vector<Node> nodes, Footprint footprint) const {
   FrameResult search;
   const auto start = std::chrono::steady_clock::now();
   // The query is described exactly as the detector describes a frame (LoopDetector::processNodes).
-  const DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
-                                              /*with_global=*/false, config_.numClasses());
+  DescribedFrame query = describeFrame(std::move(nodes), config_.graph, config_.descriptor,
+                                        /*with_global=*/false, config_.numClasses());
+  query.footprint = std::move(footprint);
   const std::vector<float> key = retrieval::computeRetrievalKey(query.graph, config_);
   search.num_nodes = query.numNodes();
   search.timing.description_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  searchDatabase(query, key, map_.database, map_.size() - 1, config_, &search);
+  searchDatabase(query, key, map_.database, map_.size() - 1, config_, &search,
+                 map_.footprints.empty() ? nullptr : &map_.footprints);
   const int best = search.best;
   return answerWith(std::move(search), best);
 }

@@ -12,6 +12,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/database.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::map {
@@ -27,10 +28,16 @@ struct Map {
   /// T_world_frame (the sensor/LiDAR frame in the map's world frame), one per frame, or none at all.
   std::vector<Eigen::Matrix4d> poses;
   FrameDatabase database;             ///< frame i of the map is database frame i
+  /// The frames' footprints (algorithm §7.7; not dilated), one per frame (an empty one where a frame had none:
+  /// node input), or none at all: a relocalization then runs without the footprint check and the consistency path.
+  std::vector<Footprint> footprints;
 
   int size() const { return database.size(); }
   bool hasPoses() const { return !poses.empty(); }
 };
+
+/// Largest Footprint::half a map accepts: a grid of 2·4096 cells a side (8 MB), far above the 80 of the defaults.
+constexpr int kMaxFootprintHalf = 4096;
 
 /// What went wrong with a map, so callers (and tests) can tell the cases apart; the message says it in words.
 enum class MapProblem {
@@ -71,10 +78,11 @@ uint64_t fingerprint(const ConfigFields& fields);
 void checkCompatible(const Map& map, const Config& config, const std::string& source);
 
 /// A map of the frames in @p database (copied), built with @p config, named @p names (one per frame) and, if
-/// @p poses is not empty, placed by them (one per frame). Throws MapError(kInvalid) if the counts differ or a
-/// name is empty or repeated.
+/// @p poses is not empty, placed by them (one per frame), with @p footprints if not empty (one per frame:
+/// LoopDetector::footprints). Throws MapError(kInvalid) if the counts differ, a name is empty or repeated, or a
+/// footprint is dilated or does not fill its grid.
 Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std::string> names,
-            std::vector<Eigen::Matrix4d> poses = {});
+            std::vector<Eigen::Matrix4d> poses = {}, std::vector<Footprint> footprints = {});
 
 /// Throws MapError(kInvalid) naming @p source unless names and poses fit the database (counts; names non-empty and
 /// unique; poses finite rigid motions: |RᵀR − I| and |det R − 1| at most 1e-3, the trajectory readers' bound).

@@ -39,8 +39,8 @@ class RelocalizationTracker {
   /// Keeps a reference to @p relocalizer (which must outlive the tracker); throws sgtllc::Error for bad options.
   explicit RelocalizationTracker(const Relocalizer& relocalizer, TrackingOptions options = {});
 
-  /// The next frame of the stream.
-  Relocalization localize(std::vector<Node> nodes);
+  /// The next frame of the stream (with its scan's footprint where the caller has one: Relocalizer::localize).
+  Relocalization localize(std::vector<Node> nodes, Footprint footprint = {});
   /// The same for an answer already computed by the relocalizer for the next frame.
   Relocalization track(Relocalization answer);
 

@@ -68,8 +68,10 @@ class Relocalizer {
 
   /// A labelled scan (sensor frame): its nodes are extracted with the configuration's clustering.
   Relocalization localize(const LabeledCloud& cloud) const;
-  /// Ready-made nodes; throws sgtllc::Error as LoopDetector::process(nodes) does for bad nodes.
-  Relocalization localize(std::vector<Node> nodes) const;
+  /// Ready-made nodes, with the scan's footprint (computeFootprint) where the caller has one: with the map's
+  /// footprints it keeps the footprint check and the consistency path (algorithm §7.7, §7.8). Throws sgtllc::Error
+  /// as LoopDetector::process(nodes) does for bad nodes.
+  Relocalization localize(std::vector<Node> nodes, Footprint footprint = {}) const;
 
   /// The answer that places the query by candidate @p candidate of @p search (an index into search.candidates,
   /// verified: rejection kNone): localized iff search.is_loop, the pose and, with map poses, the map frame nearest
