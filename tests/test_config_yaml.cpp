@@ -5,6 +5,7 @@
 
 #include <map>
 
+#include "retrieval/ivf_index.h"
 #include "sgtllc/io/config_yaml.h"
 #include "test_config_support.h"
 #include "test_io_support.h"
@@ -170,6 +171,15 @@ TEST(ConfigYaml, BundledConfigsLoad) {
   EXPECT_EQ(objects.labels.extra_classes[0].name, "vehicle");
   EXPECT_EQ(objects.labels.extra_classes[0].ids, (std::vector<uint32_t>{10}));
   EXPECT_EQ(objects.numClasses(), 8);
+  // The million-frame settings need the inverted file, which a build without FAISS refuses by name.
+  if (internal::ivfAvailable()) {
+    const Config large = io::loadConfig(dir + "large-map.yaml");
+    EXPECT_EQ(large.retrieval.method, RetrievalMethod::kIvf);
+    EXPECT_EQ(large.retrieval.histogram_bins, 10);
+    EXPECT_EQ(large.retrieval.histogram_range, 20.0);
+  } else {
+    EXPECT_THROW(io::loadConfig(dir + "large-map.yaml"), ConfigError);
+  }
 }
 
 }  // namespace
