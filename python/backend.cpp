@@ -39,7 +39,7 @@ void resultTypes(py::module_& m) {
       .def_readonly("num_accepted", &BackendResult::num_accepted, "loops used by the optimisation")
       .def_readonly("num_rejected", &BackendResult::num_rejected, "inconsistent + large residual")
       .def_readonly("solves", &BackendResult::solves, "Ceres solves")
-      .def_readonly("iterations", &BackendResult::iterations, "Levenberg-Marquardt iterations over all solves")
+      .def_readonly("iterations", &BackendResult::iterations, "trust-region (Dogleg) iterations over all solves")
       .def_readonly("final_cost", &BackendResult::final_cost, "½ Σ ρ(eᵀΩe) of the last solve")
       .def_readonly("converged", &BackendResult::converged, "every solve met a tolerance")
       .def_readonly("reduced", &BackendResult::reduced, "from optimize_reduced: the anchors' graph")

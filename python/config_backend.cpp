@@ -36,14 +36,16 @@ void bindBackendConfig(py::module_& m) {
   py::class_<SolverSettings>(m, "SolverSettings", "Ceres solver settings (backend.solver.*).")
       .def(py::init<>())
       .def_readwrite("num_threads", &SolverSettings::num_threads, "Ceres threads")
-      .def_readwrite("max_iterations", &SolverSettings::max_iterations, "Levenberg-Marquardt iterations per solve")
+      .def_readwrite("max_iterations", &SolverSettings::max_iterations, "trust-region (Dogleg) iterations per solve")
       .def_readwrite("function_tolerance", &SolverSettings::function_tolerance, "relative cost change to stop")
       .def_readwrite("parameter_tolerance", &SolverSettings::parameter_tolerance, "relative step to stop")
       .def_readwrite("reduced_warm_start", &SolverSettings::reduced_warm_start, "start the full solve from the reduced one");
 
   py::class_<OnlineSettings>(m, "OnlineSettings", "Online re-optimisation (backend.online.*).")
       .def(py::init<>())
-      .def_readwrite("reduced_graph", &OnlineSettings::reduced_graph, "close_loop solves the anchors' graph only");
+      .def_readwrite("reduced_graph", &OnlineSettings::reduced_graph, "close_loop solves the anchors' graph only")
+      .def_readwrite("anchor_spacing_m", &OnlineSettings::anchor_spacing_m,
+                     "path stretch (m) whose loop endpoints share one anchor (0: each its own)");
 
   py::class_<BackendConfig>(m, "BackendConfig", "Pose-graph back end settings (backend.*).")
       .def(py::init<>())

@@ -192,6 +192,7 @@ class SolverSettings:
     reduced_warm_start: bool
 class OnlineSettings:
     reduced_graph: bool
+    anchor_spacing_m: float
 class BackendConfig:
     odometry: OdometryNoise
     loops: LoopNoise

@@ -31,6 +31,7 @@ void validateBackendConfig(const backend::BackendConfig& b) {
   checkInt("backend.solver.max_iterations", b.solver.max_iterations, 1, 100000);
   checkReal("backend.solver.function_tolerance", b.solver.function_tolerance, {0.0, false}, {1.0});
   checkReal("backend.solver.parameter_tolerance", b.solver.parameter_tolerance, {0.0, false}, {1.0});
+  checkReal("backend.online.anchor_spacing_m", b.online.anchor_spacing_m, {0.0}, {1000.0});
 }
 
 }  // namespace sgtllc

@@ -91,6 +91,24 @@ TEST_F(RunOdometry, OnlineAgreesWithBatchAndOutputIsTheSameAtAnyThreadCount) {
                         io::readTrajectory(path("t0"), calib).poses, 1e-4);
 }
 
+// --online --json reports the CPU time of each re-solve and how far the final full solve moved the frames from the
+// online estimate: here one loop, one re-solve, and a shift for each of the 54 frames.
+TEST_F(RunOdometry, OnlineJsonReportsTheReSolves) {
+  const CliRun r = run(seq() + " --online --json", false);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto b = nlohmann::json::parse(r.out)["backend"];
+  ASSERT_TRUE(b.contains("online_solve_ms")) << b.dump();
+  EXPECT_EQ(b["online_solve_ms"]["count"].get<int>(), 1);
+  const double median = b["online_solve_ms"]["median"].get<double>();
+  EXPECT_GE(median, 0.0);
+  EXPECT_EQ(b["online_solve_ms"]["max"].get<double>(), median);  // one value
+  EXPECT_EQ(b["online_final_shift_m"]["count"].get<int>(), 54);
+  EXPECT_GE(b["online_final_shift_m"]["max"].get<double>(), b["online_final_shift_m"]["p99"].get<double>());
+  EXPECT_GE(b["online_final_shift_m"]["p99"].get<double>(), b["online_final_shift_m"]["median"].get<double>());
+  EXPECT_THAT(run(seq() + " --online", false).out, HasSubstr("  online re-solves: 1, CPU median "));
+  EXPECT_FALSE(nlohmann::json::parse(run(seq() + " --json", false).out)["backend"].contains("online_solve_ms"));
+}
+
 TEST_F(RunOdometry, EvalReportsTheTrajectoryErrorsOfBoth) {
   const CliRun r = run("eval " + path("seq") + " --odometry " + path("odo.txt") + " --json --report " +
                        path("report"), false);

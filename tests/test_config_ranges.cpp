@@ -164,6 +164,7 @@ std::vector<Range> ranges() {
   r.push_back({b + "solver.max_iterations", {"1", "100000"}, {"0", "100001"}, "[1, 100000]"});
   r.push_back({b + "solver.function_tolerance", {"1e-09", "1"}, {"0", "2"}, "(0, 1]"});
   r.push_back({b + "solver.parameter_tolerance", {"1e-09", "1"}, {"0", "2"}, "(0, 1]"});
+  r.push_back({b + "online.anchor_spacing_m", {"0", "1000"}, {"-1", "1001"}, "[0, 1000]"});
   r.push_back({"labels.custom_map", {"{0: -1, 65535: 6}"}, {"{65536: 0}", "{-1: 0}"}, "ids must be integers 0..65535",
                true});
   r.push_back({"labels.custom_map", {}, {"{50: 7}", "{50: -2}"}, "classes must be integers -1..6", true});
@@ -219,8 +220,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 40 other keys, 18 backend.*, 16 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 40 + 18 + 16 + 26);
+  // 8 classes incl. vehicle, 40 other keys, 19 backend.*, 16 registration.*, 26 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 40 + 19 + 16 + 26);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

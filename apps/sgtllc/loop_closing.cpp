@@ -1,9 +1,12 @@
 #include "loop_closing.h"
 
+#include <algorithm>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 
 #include "sgtllc/backend/information.h"
+#include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/g2o.h"
 
 namespace fs = std::filesystem;
@@ -13,6 +16,21 @@ namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Process CPU time: the online re-solve runs while the detector's threads wait, so this is the solve's own cost
+// (with backend.solver.num_threads > 1, its threads' time summed).
+double processCpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
+}
+
+Json statsJson(const std::vector<double>& v) {
+  return {{"count", v.size()},
+          {"median", eval::percentile(v, 0.5)},
+          {"p99", eval::percentile(v, 0.99)},
+          {"max", v.empty() ? 0.0 : *std::max_element(v.begin(), v.end())}};
 }
 
 std::vector<backend::Edge> acceptedLoopEdges(const std::vector<ClosingLoop>& loops, const backend::BackendResult& r) {
@@ -161,7 +179,9 @@ void OnlineClosing::addFramesUpTo(int frame) {
 const backend::BackendResult& OnlineClosing::closeLoop(int frame, const ClosingLoop& loop) {
   addFramesUpTo(frame);
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = processCpuMs();
   const backend::BackendResult& r = optimizer_.closeLoop(loop.edge);
+  solve_cpu_ms_.push_back(processCpuMs() - cpu_start);
   ms_ += msSince(start);
   return r;
 }
@@ -171,10 +191,15 @@ Closing OnlineClosing::finish() {
   Closing c;
   // closeLoop() solved the reduced graph (docs/backend.md, "Online"); one full solve at the end makes the online
   // result the batch result, as a robot would do once the drive ends. No loop: the odometry is the optimum.
+  const std::vector<Eigen::Isometry3d> online_poses = optimizer_.poses();
   const auto start = std::chrono::steady_clock::now();
   c.result = optimizer_.numLoops() > 0 ? optimizer_.optimize() : optimizer_.result();
   c.final_ms = msSince(start);
   c.poses = optimizer_.poses();
+  c.online_solve_cpu_ms = solve_cpu_ms_;
+  for (size_t i = 0; i < c.poses.size(); ++i) {
+    c.online_final_shift_m.push_back((c.poses[i].translation() - online_poses[i].translation()).norm());
+  }
   c.result.poses = c.poses;
   c.ms = ms_ + c.final_ms;
   return c;
@@ -251,7 +276,7 @@ Json closingJson(const std::vector<ClosingLoop>& loops, const Closing& closing) 
                     {"chi2", r.chi2},
                     {"injected", loops[k].injected}});
   }
-  return {{"loops", c.loops},
+  Json out = {{"loops", c.loops},
           {"accepted", c.accepted},
           {"rejected", c.loops - c.accepted},
           {"rejected_inconsistent", c.inconsistent},
@@ -265,6 +290,11 @@ Json closingJson(const std::vector<ClosingLoop>& loops, const Closing& closing) 
           {"final_cost", closing.result.final_cost},
           {"optimisation_ms", closing.ms},
           {"loop_list", list}};
+  if (!closing.online_final_shift_m.empty()) {
+    out["online_solve_ms"] = statsJson(closing.online_solve_cpu_ms);
+    out["online_final_shift_m"] = statsJson(closing.online_final_shift_m);
+  }
+  return out;
 }
 
 std::string closingSummary(const std::vector<ClosingLoop>& loops, const Closing& closing) {
@@ -275,6 +305,15 @@ std::string closingSummary(const std::vector<ClosingLoop>& loops, const Closing&
                   std::to_string(closing.result.solves) + " solves, " + std::to_string(closing.result.iterations) +
                   " iterations" + (closing.result.converged ? "" : " (not converged)") + ", " +
                   fixed(closing.ms, 1) + " ms\n";
+  if (!closing.online_final_shift_m.empty()) {
+    const std::vector<double>& t = closing.online_solve_cpu_ms;
+    const std::vector<double>& d = closing.online_final_shift_m;
+    s += "  online re-solves: " + std::to_string(t.size()) + ", CPU median " + fixed(eval::percentile(t, 0.5), 1) +
+         " ms, p99 " + fixed(eval::percentile(t, 0.99), 1) + " ms, max " +
+         fixed(t.empty() ? 0.0 : *std::max_element(t.begin(), t.end()), 1) +
+         " ms; the final full solve moved the frames by median " + fixed(eval::percentile(d, 0.5), 3) +
+         " m, max " + fixed(*std::max_element(d.begin(), d.end()), 3) + " m\n";
+  }
   if (c.nominal > 0) {
     s += "  " + std::to_string(c.nominal) + " loops without their own information use the nominal model\n";
   }

@@ -83,6 +83,12 @@ struct Closing {
   std::vector<Eigen::Isometry3d> poses;  ///< corrected trajectory, T_world_frame
   double ms = 0.0;                       ///< optimisation time (all solves)
   double final_ms = 0.0;                 ///< online: the full solve after the last frame (included in ms)
+  /// Online: the process CPU time of each re-solve at a loop (ms), in the order of the loops; the final full solve
+  /// is not among them.
+  std::vector<double> online_solve_cpu_ms;
+  /// Online: how far the final full solve moved each frame from the online estimate (m): the error of the online
+  /// poses, had the drive ended before the last frame.
+  std::vector<double> online_final_shift_m;
 };
 
 /// Odometry edges + all loops, optimised once (batch).
@@ -102,6 +108,7 @@ class OnlineClosing {
   const Odometry& odometry_;
   backend::PoseGraphOptimizer optimizer_;
   double ms_ = 0.0;
+  std::vector<double> solve_cpu_ms_;
   void addFramesUpTo(int frame);
 };
 

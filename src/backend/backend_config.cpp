@@ -33,6 +33,7 @@ void BackendConfig::validate() const {
   require(nonNegative(consistency.rotation_per_m), "consistency.rotation_per_m", "must be >= 0 (rad/m)");
   require(positive(max_loop_chi2), "max_loop_chi2", "must be > 0");
   require(max_rejection_rounds >= 0, "max_rejection_rounds", "must be >= 0");
+  require(nonNegative(online.anchor_spacing_m), "online.anchor_spacing_m", "must be >= 0 (m)");
   require(solver.num_threads >= 1, "solver.num_threads", "must be >= 1");
   require(solver.max_iterations >= 1, "solver.max_iterations", "must be >= 1");
   require(positive(solver.function_tolerance), "solver.function_tolerance", "must be > 0");

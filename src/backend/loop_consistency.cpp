@@ -44,9 +44,13 @@ std::vector<int> ConsistencyGraph::maximumClique() const {
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return degree_[a] > degree_[b]; });
   std::vector<int> best;
+  std::vector<uint64_t> in_best(rows_.empty() ? 0 : rows_[0].size(), 0u);
   for (int s = 0; s < n; ++s) {
     const int seed = order[s];
     if (degree_[seed] + 1 <= static_cast<int>(best.size())) break;  // no larger clique can grow from here
+    // A member of the largest clique so far is not tried: growing from it mostly finds that clique again, and
+    // trying each member cost O(n²) word operations per solve once most loops agree (docs/backend.md, "Online").
+    if ((in_best[seed / 64] >> (seed % 64)) & 1u) continue;
     std::vector<uint64_t> candidates = rows_[seed];
     std::vector<int> clique{seed};
     int remaining = degree_[seed];
@@ -62,7 +66,11 @@ std::vector<int> ConsistencyGraph::maximumClique() const {
       }
       if (static_cast<int>(clique.size()) + remaining <= static_cast<int>(best.size())) break;
     }
-    if (clique.size() > best.size()) best = clique;
+    if (clique.size() > best.size()) {
+      best = clique;
+      std::fill(in_best.begin(), in_best.end(), 0u);
+      for (int u : best) in_best[u / 64] |= uint64_t{1} << (u % 64);
+    }
   }
   std::sort(best.begin(), best.end());
   return best;

@@ -1,5 +1,7 @@
 #include "sgtllc/backend/pose_graph_optimizer.h"
 
+#include <algorithm>
+#include <map>
 #include <string>
 
 #include "ceres_pose_graph.h"
@@ -111,25 +113,42 @@ const BackendResult& PoseGraphOptimizer::run(bool reduced) {
   }
   std::vector<int> kept = consistency_.maximumClique();
 
-  // The reduced graph's anchors include the endpoints of every loop, so the χ² of any loop is exact on it.
+  // Online, the loop endpoints within one stretch of path (backend.online.anchor_spacing_m) share one anchor, the
+  // middle one, and the others are carried to it (or to the anchor on their other side, when nearer): a loop seldom
+  // carries far, and the anchors stay under the path length over the spacing however many loops arrive. The warm
+  // start of optimize() keeps every endpoint an anchor.
   const bool warm_start = !reduced && config_.solver.reduced_warm_start && !kept.empty();
   internal::ReducedGraph graph;
   std::vector<Eigen::Isometry3d> anchor_poses;
+  std::vector<Edge> carried;  // loops_ on the reduced graph
   if (reduced || warm_start) {
+    const double spacing = reduced ? config_.online.anchor_spacing_m : 0.0;
     std::vector<int> anchors;
-    for (const Edge& e : loops_) anchors.insert(anchors.end(), {e.from, e.to});
+    std::map<int, std::vector<int>> stretches;  // first frame of a stretch → the loop endpoints in it
+    for (const Edge& e : loops_) {
+      const int from = chain_.stretchStart(e.from, spacing), to = chain_.stretchStart(e.to, spacing);
+      if (from == to) {  // a loop within one stretch would join an anchor to itself: its endpoints stay anchors
+        anchors.insert(anchors.end(), {e.from, e.to});
+      } else {
+        stretches[from].push_back(e.from);
+        stretches[to].push_back(e.to);
+      }
+    }
+    for (auto& [start, frames] : stretches) {
+      std::sort(frames.begin(), frames.end());
+      frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+      anchors.push_back(frames[frames.size() / 2]);
+    }
     graph = internal::reduceOdometry(odometry_, odometry_covariance_, std::move(anchors));
     for (int a : graph.anchors) anchor_poses.push_back(poses_[a]);
+    carried.reserve(loops_.size());
+    for (const Edge& e : loops_) carried.push_back(internal::carryLoop(graph, e));
   }
   auto solveKept = [&](bool on_reduced) {
     std::vector<Edge> active;
-    for (int i : kept) active.push_back(loops_[i]);
+    for (int i : kept) active.push_back(on_reduced ? carried[i] : loops_[i]);
     internal::SolveSummary s;
     if (on_reduced) {
-      for (Edge& e : active) {
-        e.from = graph.index(e.from);
-        e.to = graph.index(e.to);
-      }
       s = internal::solve(graph.chains, active, anchor_poses, config_);
       for (size_t k = 0; k < graph.anchors.size(); ++k) poses_[graph.anchors[k]] = anchor_poses[k];
       result.num_poses_solved = static_cast<int>(anchor_poses.size());
@@ -153,7 +172,7 @@ const BackendResult& PoseGraphOptimizer::run(bool reduced) {
     int worst = -1;
     double worst_chi2 = config_.max_loop_chi2;
     for (size_t k = 0; k < kept.size(); ++k) {
-      const double c = chi2(loops_[kept[k]], poses_);
+      const double c = reduced ? chi2(carried[kept[k]], anchor_poses) : chi2(loops_[kept[k]], poses_);
       if (c > worst_chi2) {
         worst_chi2 = c;
         worst = static_cast<int>(k);

@@ -44,7 +44,7 @@ void addBackendFields(const BackendFieldMakers& add) {
           [](B& b) -> int& { return b.max_rejection_rounds; });
   integer("solver.num_threads", "Ceres threads; results do not depend on it (--threads sets it too)",
           [](B& b) -> int& { return b.solver.num_threads; });
-  integer("solver.max_iterations", "Levenberg-Marquardt iterations per solve",
+  integer("solver.max_iterations", "trust-region (Dogleg) iterations per solve",
           [](B& b) -> int& { return b.solver.max_iterations; });
   number("solver.function_tolerance", "stop when the relative cost change is below this",
          [](B& b) -> double& { return b.solver.function_tolerance; });
@@ -55,6 +55,8 @@ void addBackendFields(const BackendFieldMakers& add) {
   add.boolean("backend.online.reduced_graph",
               "online re-optimisation over loop-endpoint anchors only (false: the full graph every loop)",
               [](Config& c) -> bool& { return c.backend.online.reduced_graph; });
+  number("online.anchor_spacing_m", "path stretch whose loop endpoints share one online anchor (m; 0: each its own)",
+         [](B& b) -> double& { return b.online.anchor_spacing_m; });
 }
 
 }  // namespace sgtllc::io::detail

@@ -51,7 +51,7 @@ struct LoopConsistency {
 
 struct SolverSettings {
   int num_threads = 1;            ///< Ceres threads (Jacobian evaluation, linear algebra); output is the same for any
-  int max_iterations = 100;       ///< Levenberg–Marquardt iterations per solve
+  int max_iterations = 100;       ///< trust-region (Dogleg) iterations per solve
   double function_tolerance = 1e-10;  ///< stop when the relative cost change falls below this
   double parameter_tolerance = 1e-10; ///< stop when the relative step falls below this
   /// optimize() first solves the reduced graph (see OnlineSettings) from the current estimate and starts the full
@@ -61,11 +61,16 @@ struct SolverSettings {
 
 /// How PoseGraphOptimizer::closeLoop re-optimises when a loop arrives (docs/backend.md, "Online").
 struct OnlineSettings {
-  /// true: optimise the reduced graph, whose poses are only the anchors (frame 0, every loop endpoint, the newest
-  /// frame) joined by the composed odometry between them, then place the frames in between from the two
-  /// anchors (first order); milliseconds on KITTI 00. optimize() still solves the full graph, and its result is
-  /// the batch result. false: every closeLoop solves the full graph.
+  /// true: optimise the reduced graph, whose poses are only the anchors (frame 0, the loop endpoints, one per
+  /// stretch of path, the newest frame) joined by the composed odometry between them, then place the frames in
+  /// between from the two anchors (first order); milliseconds on KITTI 00. optimize() still solves the full graph,
+  /// and its result is the batch result. false: every closeLoop solves the full graph.
   bool reduced_graph = true;
+  /// Stretch of odometry path (m) whose loop endpoints share one anchor of the reduced graph, the middle one; a
+  /// loop ending elsewhere is carried along the odometry to the nearer anchor, so the anchors stay under the path
+  /// length over the spacing however many loops arrive (docs/backend.md, "Online"). 0: every loop endpoint is an
+  /// anchor.
+  double anchor_spacing_m = 5.0;
 };
 
 struct BackendConfig {

@@ -35,8 +35,9 @@ class ConsistencyGraph {
   int degree(int i) const { return degree_[i]; }
 
   /// A largest set of mutually consistent loops, ascending.
-  /// Greedy and deterministic: from every seed in descending degree (ties: lower index), add the candidates in
-  /// the same order while they stay consistent with all chosen; keep the largest (ties: the first found).
+  /// Greedy and deterministic: from every seed in descending degree (ties: lower index) that is not in the
+  /// largest clique found so far, add the candidates in the same order while they stay consistent with all chosen;
+  /// keep the largest (ties: the first found).
   std::vector<int> maximumClique() const;
 
  private:

@@ -20,6 +20,9 @@ class OdometryChain {
   Eigen::Isometry3d relative(int a, int b) const { return poses_[a].inverse() * poses_[b]; }
   /// Odometry path length between frames a and b (m), in either order.
   double pathLength(int a, int b) const { return a < b ? length_[b] - length_[a] : length_[a] - length_[b]; }
+  /// The first frame of the @p spacing-metre stretch of path (measured from frame 0) that holds @p frame: frames
+  /// that share a stretch share it, so a standstill never adds one. @p spacing ≤ 0: @p frame itself.
+  int stretchStart(int frame, double spacing) const;
 
  private:
   std::vector<Eigen::Isometry3d> poses_;  ///< T_first_frame

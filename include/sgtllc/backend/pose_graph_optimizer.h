@@ -4,11 +4,12 @@
 /// Every optimize() does the same three steps on all loops received so far, so the online result after the
 /// last loop equals the batch result up to the solver tolerance (only the starting point differs):
 ///   1. pairwise consistency of the loops with the odometry → largest consistent set (loop_consistency.h);
-///   2. Levenberg–Marquardt on SE(3) over odometry (squared) and the kept loops (robust loss), frame 0 fixed;
+///   2. Dogleg (Ceres trust region) on SE(3) over odometry (squared) and the kept loops (robust loss), frame 0 fixed;
 ///   3. residual check: while a kept loop's χ² exceeds max_loop_chi2, drop the worst and re-optimise.
 /// optimizeReduced() (what closeLoop() runs by default) does the same steps on the reduced graph of the anchors
-/// (frame 0, the loop endpoints, the newest frame), then places the frames in between: a first-order
-/// approximation of optimize() at a fraction of its cost (docs/backend.md, "Online").
+/// (frame 0, the loop endpoints, one per stretch of config.online.anchor_spacing_m of path, the newest frame),
+/// then places the frames in between: an approximation of optimize() whose cost is bounded by the path length, not
+/// the number of loops (docs/backend.md, "Online").
 #pragma once
 
 #include <vector>
@@ -45,7 +46,7 @@ struct BackendResult {
   int num_accepted = 0;
   int num_rejected = 0;                  ///< inconsistent + large residual
   int solves = 0;  ///< Ceres solves: the reduced warm start if any, 1 + residual-check rounds that dropped a loop
-  int iterations = 0;                    ///< Levenberg–Marquardt iterations over all solves
+  int iterations = 0;                    ///< trust-region (Dogleg) iterations over all solves
   double final_cost = 0.0;               ///< ½ Σ ρ(eᵀΩe) of the last solve
   bool converged = true;                 ///< every solve met a tolerance within max_iterations
   bool reduced = false;                  ///< from optimizeReduced(): the anchors' graph, frames in between placed
@@ -80,10 +81,11 @@ class PoseGraphOptimizer {
   /// estimate (first from the reduced graph's solution if config.solver.reduced_warm_start).
   const BackendResult& optimize();
   /// Runs the outlier step and the optimisation over everything received on the reduced graph: the anchors are
-  /// frame 0, the endpoints of every loop and the newest frame; the odometry between consecutive anchors is one
-  /// edge with the propagated covariance; each frame between two anchors is then placed by the least-squares
-  /// solution of its chain between them, to first order. O(frames) outside the solver, whose size is the
-  /// number of anchors.
+  /// frame 0, the loop endpoints (the middle one of those within one stretch of config.online.anchor_spacing_m of
+  /// path; the others' loops are carried to an anchor along the odometry) and the newest frame; the odometry
+  /// between consecutive anchors is one edge with the propagated covariance; each frame between two anchors is
+  /// then placed by the least-squares solution of its chain between them, to first order. O(frames + loops)
+  /// outside the solver, whose size is the number of anchors.
   const BackendResult& optimizeReduced();
 
   int numFrames() const { return static_cast<int>(poses_.size()); }
