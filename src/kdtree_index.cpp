@@ -6,6 +6,8 @@
 
 #include <nanoflann.hpp>
 
+#include "sgtllc/point_kdtree.h"
+
 namespace sgtllc::internal {
 namespace {
 
@@ -68,7 +70,12 @@ void KdTreeIndex::knn(const float* query, int k, std::vector<std::pair<int, floa
   for (const auto& [i, d] : within) out->emplace_back(static_cast<int>(i), d);
 }
 
+}  // namespace sgtllc::internal
+
+namespace sgtllc {
+
 struct PointKdTree::Tree {
+  using RowsAdaptor = internal::RowsAdaptor;
   using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, RowsAdaptor>, RowsAdaptor, 3,
                                                     uint32_t>;
   RowsAdaptor adaptor;
@@ -105,4 +112,4 @@ void PointKdTree::knn(const float* query, int k, std::vector<uint32_t>* out) con
   out->resize(result.size());
 }
 
-}  // namespace sgtllc::internal
+}  // namespace sgtllc

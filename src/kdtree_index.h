@@ -1,5 +1,6 @@
 /// @file kdtree_index.h
-/// @brief The project's one nanoflann wrapper: an exact, growing kd-tree over rows of a float matrix (internal).
+/// @brief The project's one nanoflann wrapper (with sgtllc/point_kdtree.h, which kdtree_index.cpp implements too):
+///        an exact, growing kd-tree over rows of a float matrix (internal).
 #pragma once
 
 #include <cstddef>
@@ -26,23 +27,6 @@ class KdTreeIndex {
  private:
   struct Tree;
   int indexed_ = 0;
-  std::unique_ptr<Tree> tree_;
-};
-
-/// A static kd-tree over 3-D points (fine registration): built once, then nearest and k-nearest queries with no
-/// tie rule (among points at exactly equal distance the tree's visiting order decides, a function of the points).
-class PointKdTree {
- public:
-  /// @p xyz holds x, y, z of each point in turn; it must outlive the tree.
-  explicit PointKdTree(const std::vector<float>* xyz);
-  ~PointKdTree();
-  /// The nearest point and its squared distance, or (−1, +inf) for an empty tree.
-  std::pair<int, float> nearest(const float* query) const;
-  /// Indices of the (at most) @p k nearest points, nearest first.
-  void knn(const float* query, int k, std::vector<uint32_t>* out) const;
-
- private:
-  struct Tree;
   std::unique_ptr<Tree> tree_;
 };
 

@@ -123,7 +123,7 @@ TEST_F(MapVersions, AHugeSparseFileIsRefusedByNameBeforeAnythingIsAllocated) {
             huge + ": corrupted map: section 1 of 4: checksum mismatch");
 }
 
-// The text readers read their files whole (io/file_util.h): a file beyond this machine's memory is refused by name
+// The text readers read their files whole (sgtllc/io/input_file.h): a file beyond this machine's memory is refused by name
 // before any allocation, not with std::bad_alloc.
 TEST_F(MapVersions, AHugeSparseTextFileIsRefusedByNameToo) {
   const std::string huge = writeBytes("poses.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n");

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "figure.h"
+#include "sgtllc/plot/figure.h"
 
 namespace sgtllc::eval {
 namespace {

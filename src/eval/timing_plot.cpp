@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "figure.h"
+#include "sgtllc/plot/figure.h"
 
 namespace sgtllc::eval {
 namespace {

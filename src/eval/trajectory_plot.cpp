@@ -4,7 +4,7 @@
 #include <array>
 #include <cstdio>
 
-#include "figure.h"
+#include "sgtllc/plot/figure.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::eval {

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <new>
 
-namespace sgtllc::io::detail {
+namespace sgtllc::io {
 
 FilePtr openForReading(const std::string& path) {
   // fopen succeeds on a directory under glibc and only the read fails, so catch that case with a clear message.
@@ -55,6 +55,10 @@ std::string gibText(uint64_t bytes) {
   std::snprintf(text, sizeof text, "%.1f GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
   return text;
 }
+
+}  // namespace sgtllc::io
+
+namespace sgtllc::io::detail {
 
 void checkNodeLabels(const std::string& path, const std::vector<Node>& nodes, int num_classes) {
   for (size_t i = 0; i < nodes.size(); ++i) {

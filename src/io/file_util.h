@@ -1,5 +1,5 @@
-// Private helpers shared by the sgtllc_io readers and writers: opening, reading and writing files with the error
-// messages the public headers document, line and token splitting, and locale-independent number conversion.
+// Private helpers shared by the sgtllc_io readers and writers: opening and reading files (public in
+// sgtllc/io/input_file.h, named here too), line and token splitting, and locale-independent number conversion.
 #pragma once
 
 #include <charconv>
@@ -13,11 +13,16 @@
 #include <system_error>
 #include <vector>
 
+#include "sgtllc/io/input_file.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::io::detail {
 
-using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+using io::FilePtr;
+using io::gibText;
+using io::loadableBytes;
+using io::openForReading;
+using io::readWholeFile;
 
 // The binary formats (KITTI .bin/.label, PCD binary) are little-endian; big-endian hosts swap after reading and
 // before writing.
@@ -36,21 +41,6 @@ void swapWordsIfBigEndian(std::vector<T>& words) {
     }
   }
 }
-
-/// Opens a file for binary reading. Throws `cannot open PATH: REASON` (strerror, or "is a directory").
-FilePtr openForReading(const std::string& path);
-
-/// The whole contents of a file (opened as openForReading); throws `cannot read PATH: REASON` on a read error, and
-/// `cannot read PATH: N bytes, more than this machine can load (M GiB of memory)` for a file larger than
-/// loadableBytes() (a sparse file of a terabyte), before allocating anything.
-std::string readWholeFile(const std::string& path);
-
-/// The most one file may cost in memory: this machine's physical memory, or the address-space limit when one is set
-/// (ulimit -v). Readers refuse larger inputs by name rather than fail with an allocation error.
-uint64_t loadableBytes();
-
-/// "1.5 GiB": @p bytes in GiB with one decimal, for messages.
-std::string gibText(uint64_t bytes);
 
 /// Throws `cannot write PATH: node I has label L, not a stable class index 0..C−1` (C = @p num_classes) for the
 /// first node whose label is not a stable class index. Writers call it before creating the file.

@@ -1,4 +1,4 @@
-#include "map/ivf_section.h"
+#include "ivf_section.h"
 
 #include <cmath>
 

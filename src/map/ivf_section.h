@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "map/map_bytes.h"
+#include "map_bytes.h"
 #include "sgtllc/database.h"
 
 namespace sgtllc::map::detail {

@@ -1,14 +1,14 @@
 // Reading the map file format (docs/map-format.md, "Reading"): the header first, then one section at a time, each
 // parsed from a small buffer while its crc32 is computed. Nothing is allocated beyond what a count that fits in
 // its section's declared bytes (and so in the file) needs, and the bytes themselves are never held whole.
-#include "map/map_decode.h"
+#include "map_decode.h"
 
 #include <algorithm>
 #include <cstring>
 #include <set>
 
-#include "file_util.h"  // gibText
-#include "map/map_sections.h"
+#include "map_sections.h"
+#include "sgtllc/io/input_file.h"
 
 namespace sgtllc::map {
 namespace detail {
@@ -63,8 +63,8 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   // The decoded map takes about 1.1 times its file (docs/map-format.md, "Reading"): refuse what cannot fit
   // rather than fail half way with an allocation error.
   if (file_bytes + file_bytes / 10 > loadable_bytes) {
-    fail(MapProblem::kTooLarge, "a map of " + sizes + " (" + io::detail::gibText(file_bytes) +
-                                    ") is more than this machine can load (" + io::detail::gibText(loadable_bytes) + " of memory)");
+    fail(MapProblem::kTooLarge, "a map of " + sizes + " (" + io::gibText(file_bytes) +
+                                    ") is more than this machine can load (" + io::gibText(loadable_bytes) + " of memory)");
   }
 
   MapLayout seen;

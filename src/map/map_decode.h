@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "map/map_bytes.h"
+#include "map_bytes.h"
 #include "sgtllc/map/map_format.h"
 
 namespace sgtllc::map::detail {

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <new>
 
-#include "file_util.h"  // sgtllc_io's private openForReading and loadableBytes: how files are opened and sized
-#include "map/map_decode.h"
+#include "map_decode.h"
+#include "sgtllc/io/input_file.h"
 
 namespace sgtllc::map {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 /// A map file read in order through stdio's buffer; its size is the one it had when opened.
 class FileSource final : public detail::ByteSource {
  public:
-  explicit FileSource(const std::string& path) : path_(path), file_(io::detail::openForReading(path)) {
+  explicit FileSource(const std::string& path) : path_(path), file_(io::openForReading(path)) {
     std::error_code ec;
     size_ = std::filesystem::file_size(path, ec);
     if (ec) throw Error("cannot read " + path + ": " + ec.message());
@@ -29,7 +29,7 @@ class FileSource final : public detail::ByteSource {
 
  private:
   std::string path_;
-  io::detail::FilePtr file_;
+  io::FilePtr file_;
   uint64_t size_ = 0;
 };
 
@@ -40,7 +40,7 @@ Map readFile(const std::string& path, RetrievalMethod method, MapLayout* layout)
   }
   FileSource file(path);
   try {
-    return detail::decodeMapFrom(file, path, method, layout, io::detail::loadableBytes());
+    return detail::decodeMapFrom(file, path, method, layout, io::loadableBytes());
   } catch (const std::bad_alloc&) {  // within the machine's memory but not within what is free now
     throw Error(path + ": out of memory while loading a map of " + std::to_string(file.size()) + " bytes");
   }

@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "map/ivf_section.h"
-#include "map/map_bytes.h"
+#include "ivf_section.h"
+#include "map_bytes.h"
 
 namespace sgtllc::map {
 

@@ -1,9 +1,9 @@
-#include "map/map_sections.h"
+#include "map_sections.h"
 
 #include <cmath>
 #include <string>
 
-#include "map/ivf_section.h"
+#include "ivf_section.h"
 
 namespace sgtllc::map::detail {
 namespace {

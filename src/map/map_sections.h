@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "map/map_bytes.h"
+#include "map_bytes.h"
 #include "sgtllc/database.h"
 #include "sgtllc/footprint.h"
 #include "sgtllc/map/map.h"

@@ -8,8 +8,8 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
-#include "kdtree_index.h"
 #include "sgtllc/frame.h"
+#include "sgtllc/point_kdtree.h"
 #include "sgtllc/retrieval/retrieval_key.h"
 #include "sgtllc/types.h"
 
@@ -78,7 +78,7 @@ struct Relocalizer::PositionIndex {
     return out;
   }
   std::vector<float> xyz;  ///< before tree: the tree is built over it
-  internal::PointKdTree tree;
+  PointKdTree tree;
 };
 
 int Relocalizer::nearestMapFrame(const Eigen::Vector3d& at) const {

@@ -1,4 +1,4 @@
-#include "figure.h"
+#include "sgtllc/plot/figure.h"
 
 #include <cairo.h>
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "figure.h"
+#include "sgtllc/plot/figure.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::plot {

@@ -13,7 +13,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "kdtree_index.h"
+#include "sgtllc/point_kdtree.h"
 
 namespace sgtllc {
 namespace {
@@ -29,7 +29,7 @@ constexpr double kCoarseConvergence = 1e-3;  // m and rad: where the coarse stag
 /// dense match cloud has many points no query point ever pairs with.
 class Normals {
  public:
-  Normals(const std::vector<float>& rows, const internal::PointKdTree& tree, int k)
+  Normals(const std::vector<float>& rows, const PointKdTree& tree, int k)
       : rows_(rows), tree_(tree), k_(k), normal_(rows.size() / 3), done_(rows.size() / 3, 0) {}
   const Eigen::Vector3f& operator()(size_t i) {
     if (!done_[i]) {
@@ -42,7 +42,7 @@ class Normals {
  private:
   Eigen::Vector3f compute(size_t i);
   const std::vector<float>& rows_;
-  const internal::PointKdTree& tree_;
+  const PointKdTree& tree_;
   int k_;
   std::vector<Eigen::Vector3f> normal_;
   std::vector<uint8_t> done_;
@@ -82,7 +82,7 @@ struct Linearisation {
 };
 
 Linearisation linearise(const std::vector<Eigen::Vector3f>& query, const std::vector<float>& rows,
-                        Normals& normal, const internal::PointKdTree& tree,
+                        Normals& normal, const PointKdTree& tree,
                         const Eigen::Matrix4d& T, double max_distance, double kernel) {
   Linearisation lin;
   const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
@@ -115,7 +115,7 @@ Linearisation linearise(const std::vector<Eigen::Vector3f>& query, const std::ve
 }
 
 /// Share of query points with a target point within @p max_distance at @p T.
-double fitnessAt(const std::vector<Eigen::Vector3f>& query, const internal::PointKdTree& tree,
+double fitnessAt(const std::vector<Eigen::Vector3f>& query, const PointKdTree& tree,
                  const Eigen::Matrix4d& T, double max_distance) {
   const Eigen::Matrix4f Tf = T.cast<float>();
   int paired = 0;
@@ -172,7 +172,7 @@ Refinement refinePose(const std::vector<Eigen::Vector3f>& query, const std::vect
   for (size_t i = 0; i < match.size(); ++i) {
     for (int d = 0; d < 3; ++d) rows[3 * i + static_cast<size_t>(d)] = match[i](d);
   }
-  const internal::PointKdTree tree(&rows);
+  const PointKdTree tree(&rows);
   Normals normal(rows, tree, config.normal_neighbors);
 
   Eigen::Matrix4d T = T_seed;

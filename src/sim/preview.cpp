@@ -6,7 +6,7 @@
 
 #include <Eigen/LU>
 
-#include "figure.h"
+#include "sgtllc/plot/figure.h"
 
 namespace sgtllc::sim {
 namespace {
