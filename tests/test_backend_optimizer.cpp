@@ -169,8 +169,8 @@ TEST(BackendOptimizer, RecoversTheTrajectoryFromNoisyOdometryAndExactLoops) {
   EXPECT_EQ(r.num_rejected, 0);
 }
 
-// Issue 8 robustness: 5 % false loops (random pairs > 50 m apart, random poses) leave the ATE within 10 % of the
-// clean result, and every false loop is reported rejected.
+// Robustness (docs/backend.md, "Outlier step"): 5 % false loops (random pairs > 50 m apart, random poses) leave
+// the ATE within 10 % of the clean result, and every false loop is reported rejected.
 TEST(BackendOptimizer, FalseLoopsAreRejectedAndDoNotBendTheMap) {
   const Drive clean = simulatedDrive(2000, 0);
   const Drive dirty = simulatedDrive(2000, 5);

@@ -43,8 +43,8 @@ TEST_F(CliLabel, KittiSevenFrameThreeRevisitsFrameZeroFromScansAlone) {
 }
 
 TEST_F(CliLabel, KittiZeroRevisitFromScansAloneWithinTheAcceptedPoseError) {
-  // Issue 9's acceptance: 4501 → 52 from the scans alone (the label files beside them unread) is a loop within
-  // 0.15 m and 1° of the ICP-refined reference. Guided matching makes it one (BENCHMARKS.md "Guided matching").
+  // The label-free target (BENCHMARKS.md "Geometric labeller"): 4501 → 52 from the scans alone (the label files
+  // beside them unread) is a loop within 0.15 m and 1° of the ICP-refined reference. Guided matching makes it one (BENCHMARKS.md "Guided matching").
   const CliRun r = run("pair " + k00 + "004501.bin " + k00 + "000052.bin --labeller geometric --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
