@@ -52,3 +52,38 @@ def test_bad_edges_raise():
     config.loss_scale = -1.0
     with pytest.raises(sgtllc.Error, match="backend.loss_scale"):
         sgtllc.PoseGraphOptimizer(config)
+
+
+def test_online_close_loop_is_bounded_by_the_path():
+    # Out 60 m and back along the same line, 1 m a frame; on the way back every frame closes a loop to the frame it
+    # passes. With one anchor per 5 m stretch the reduced graph stays at about 120 / 5 poses whatever the loop count;
+    # with every loop endpoint an anchor it holds them all. The final optimize() is the batch solution either way.
+    truth = [np.eye(4)]
+    for i in range(120):
+        truth.append(truth[-1] @ step(1.0, 180.0 if i == 59 else 0.0))
+    rng = np.random.default_rng(3)
+    odometry = []
+    for a, b in zip(truth[:-1], truth[1:]):
+        noise = step(0.01 * rng.standard_normal(), 0.05 * rng.standard_normal())
+        odometry.append(np.linalg.inv(a) @ b @ noise)
+    loops = [sgtllc.Edge(120 - q, q, np.linalg.inv(truth[120 - q]) @ truth[q], np.diag([1e3] * 3 + [1e4] * 3))
+             for q in range(70, 121)]
+
+    def run(spacing):
+        config = sgtllc.BackendConfig()
+        config.online.anchor_spacing_m = spacing
+        optimizer = sgtllc.PoseGraphOptimizer(config)
+        solved = []
+        for q in range(1, 121):
+            optimizer.add_odometry(odometry[q - 1])
+            if q >= 70:
+                result = optimizer.close_loop(loops[q - 70])
+                assert result.reduced and result.num_accepted == q - 69
+                solved.append(result.num_poses_solved)
+        return solved, optimizer.optimize().poses
+
+    bounded, bounded_final = run(5.0)
+    exact, exact_final = run(0.0)
+    assert exact[-1] >= 100          # every endpoint of 51 loops, frame 0 and the newest
+    assert max(bounded) <= 120 // 5 + 4
+    np.testing.assert_allclose(bounded_final, exact_final, atol=1e-6)
