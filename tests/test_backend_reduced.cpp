@@ -172,8 +172,8 @@ TEST(BackendReduced, StretchStartIsTheFirstFrameOfItsStretchOfPath) {
   EXPECT_EQ(chain.stretchStart(8, 0.0), 8);
 }
 
-// A loop whose two endpoints fall in one stretch of path (a slow revisit) keeps its own endpoints as anchors
-// instead of joining an anchor to itself.
+// A loop whose two endpoints fall in one stretch of path (a slow revisit) does not join an anchor to itself: the
+// stretch's anchor is one endpoint and the loop reaches the other through the newest frame, here the other one.
 TEST(BackendReduced, LoopWithinOneStretchStillSolves) {
   BackendConfig config;
   config.online.anchor_spacing_m = 10.0;

@@ -14,9 +14,11 @@ void OdometryChain::append(const Eigen::Isometry3d& T_prev_curr) {
 
 int OdometryChain::stretchStart(int frame, double spacing) const {
   if (!(spacing > 0.0)) return frame;
-  const double start = std::floor(length_[frame] / spacing) * spacing;
-  const int first = static_cast<int>(std::lower_bound(length_.begin(), length_.end(), start) - length_.begin());
-  return std::min(first, frame);  // rounding in floor() · spacing never moves it past the frame
+  // Compare stretch numbers, not lengths, so that rounding cannot split the frames of one stretch.
+  const double stretch = std::floor(length_[frame] / spacing);
+  const auto first = std::partition_point(length_.begin(), length_.begin() + frame,
+                                          [&](double length) { return std::floor(length / spacing) < stretch; });
+  return static_cast<int>(first - length_.begin());
 }
 
 }  // namespace sgtllc::backend

@@ -114,9 +114,9 @@ const BackendResult& PoseGraphOptimizer::run(bool reduced) {
   std::vector<int> kept = consistency_.maximumClique();
 
   // Online, the loop endpoints within one stretch of path (backend.online.anchor_spacing_m) share one anchor, the
-  // middle one, and the others are carried to it (or to the anchor on their other side, when nearer): a loop seldom
-  // carries far, and the anchors stay under the path length over the spacing however many loops arrive. The warm
-  // start of optimize() keeps every endpoint an anchor.
+  // middle one, and the others are carried to it (or to the anchor on their other side, when nearer; a loop within
+  // one stretch goes to two different anchors): a loop seldom carries far, and the anchors stay under the path
+  // length over the spacing however many loops arrive. The warm start of optimize() keeps every endpoint an anchor.
   const bool warm_start = !reduced && config_.solver.reduced_warm_start && !kept.empty();
   internal::ReducedGraph graph;
   std::vector<Eigen::Isometry3d> anchor_poses;
@@ -126,13 +126,8 @@ const BackendResult& PoseGraphOptimizer::run(bool reduced) {
     std::vector<int> anchors;
     std::map<int, std::vector<int>> stretches;  // first frame of a stretch → the loop endpoints in it
     for (const Edge& e : loops_) {
-      const int from = chain_.stretchStart(e.from, spacing), to = chain_.stretchStart(e.to, spacing);
-      if (from == to) {  // a loop within one stretch would join an anchor to itself: its endpoints stay anchors
-        anchors.insert(anchors.end(), {e.from, e.to});
-      } else {
-        stretches[from].push_back(e.from);
-        stretches[to].push_back(e.to);
-      }
+      stretches[chain_.stretchStart(e.from, spacing)].push_back(e.from);
+      stretches[chain_.stretchStart(e.to, spacing)].push_back(e.to);
     }
     for (auto& [start, frames] : stretches) {
       std::sort(frames.begin(), frames.end());
@@ -185,7 +180,8 @@ const BackendResult& PoseGraphOptimizer::run(bool reduced) {
   if (reduced) internal::redistribute(graph, poses_);
   for (int i : kept) result.loops[i].decision = LoopDecision::kAccepted;
   for (size_t i = 0; i < loops_.size(); ++i) {
-    result.loops[i].chi2 = chi2(loops_[i], poses_);
+    // On the reduced graph, the χ² the residual check judged: of the loop as carried to its anchors.
+    result.loops[i].chi2 = reduced ? chi2(carried[i], anchor_poses) : chi2(loops_[i], poses_);
     if (result.loops[i].decision == LoopDecision::kAccepted) {
       ++result.num_accepted;
     } else {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include <Eigen/LU>
+
 #include "ceres_pose_graph.h"
 #include "se3.h"
 
@@ -82,7 +84,7 @@ std::pair<Piece, Piece> pieces(const ReducedGraph& reduced, int frame) {
   return {before, after};
 }
 
-// The shorter piece, by the translation variance it carries (so that a standstill does not count).
+// The shorter piece, by the translation variance it carries.
 const Piece& shorter(const std::pair<Piece, Piece>& p) {
   const double before = p.first.covariance.topLeftCorner<3, 3>().trace();
   return p.second.covariance.topLeftCorner<3, 3>().trace() < before ? p.second : p.first;
@@ -105,15 +107,16 @@ Edge carryLoop(const ReducedGraph& reduced, const Edge& loop) {
   e.T_from_to = f.T * loop.T_from_to * g.T.inverse();
   const Matrix6d A = adjointInverse(loop.T_from_to);
   const Matrix6d B = adjointInverse(g.T.inverse());  // Ad(T̂_B_g)
-  const Matrix6d sigma_loop = loop.information.ldlt().solve(Matrix6d::Identity());
-  Matrix6d sigma = B * (A * f.covariance * A.transpose() + sigma_loop + g.covariance) * B.transpose();
-  sigma = 0.5 * (sigma + sigma.transpose()).eval();
-  e.information = sigma.ldlt().solve(Matrix6d::Identity());
-  e.information = 0.5 * (e.information + e.information.transpose()).eval();
-  if (!e.information.allFinite()) {  // a singular loop information: carry it without the odometry pieces
+  const Eigen::FullPivLU<Matrix6d> loop_lu(loop.information);
+  if (!loop_lu.isInvertible()) {  // a singular loop information (a g2o file's): carried without the pieces
     const Matrix6d B_inv = adjointInverse(g.T);
     e.information = B_inv.transpose() * loop.information * B_inv;
+    return e;
   }
+  Matrix6d sigma = B * (A * f.covariance * A.transpose() + loop_lu.inverse() + g.covariance) * B.transpose();
+  sigma = 0.5 * (sigma + sigma.transpose()).eval();
+  e.information = sigma.inverse();
+  e.information = 0.5 * (e.information + e.information.transpose()).eval();
   return e;
 }
 

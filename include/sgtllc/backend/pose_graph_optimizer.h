@@ -37,7 +37,7 @@ struct LoopReport {
   int to = 0;                  ///< query frame
   LoopDecision decision = LoopDecision::kAccepted;
   int consistent_with = 0;     ///< other loops it is pairwise consistent with
-  double chi2 = 0.0;           ///< eᵀΩe at the returned poses (also for rejected loops)
+  double chi2 = 0.0;  ///< eᵀΩe at the returned poses (also for rejected loops); reduced: as carried to its anchors
 };
 
 struct BackendResult {
