@@ -1,6 +1,7 @@
 // Geometric labeller: time per scan (median, p99 over --repeat runs of every scan) and, for scans given with a
 // reference label file, per-class precision / recall / IoU against it (docs/labeller.md, BENCHMARKS.md).
-//   sgtllc_bench_labeller [--repeat N] SCAN.bin[,REFERENCE.label] ...
+//   sgtllc_bench_labeller [--repeat N] [--config FILE] SCAN.bin[,REFERENCE.label] ...
+// --config takes the labeller.* keys of a YAML configuration (the rules measured against the defaults).
 // Trunk and pole are one class in the labeller, so the reference's trunk counts as pole. A folder argument takes
 // its velodyne/*.bin (timing only).
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "sgtllc/eval/label_agreement.h"
+#include "sgtllc/io/config_yaml.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/labels.h"
@@ -32,11 +34,14 @@ void printCounts(const char* title, const sgtllc::eval::ClassAgreement& k) {
 
 int main(int argc, char** argv) {
   int repeat = 5;
+  std::string config_path;
   std::vector<std::pair<std::string, std::string>> inputs;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--repeat" && a + 1 < argc) {
       repeat = std::max(1, std::stoi(argv[++a]));
+    } else if (arg == "--config" && a + 1 < argc) {
+      config_path = argv[++a];
     } else if (std::filesystem::is_directory(arg)) {
       std::vector<std::string> bins;
       for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(arg) / "velodyne")) {
@@ -50,11 +55,12 @@ int main(int argc, char** argv) {
     }
   }
   if (inputs.empty()) {
-    std::fprintf(stderr, "usage: %s [--repeat N] SCAN.bin[,REFERENCE.label] ... | SEQUENCE_DIR\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--repeat N] [--config FILE] SCAN.bin[,REFERENCE.label] ... | SEQUENCE_DIR\n", argv[0]);
     return 2;
   }
   try {
-    const sgtllc::label::GeometricLabeller labeller;
+    const sgtllc::label::GeometricLabeller labeller(
+        config_path.empty() ? sgtllc::LabellerConfig{} : sgtllc::io::loadConfig(config_path).labeller);
     // Wall-clock and process CPU time: on a shared machine the CPU time is what one free core would take.
     std::vector<double> times, cpu_times;
     const sgtllc::LabelMap reference_map;

@@ -39,6 +39,8 @@ void bindLabel(py::module_& m) {
       .def_readwrite("pole_min_span", &S::pole_min_span, "pole slice: height a thin component spans (m)")
       .def_readwrite("pole_voxel", &S::pole_voxel, "pole slice: voxel leaf (m)")
       .def_readwrite("pole_radius", &S::pole_radius, "pole slice: radius around a pole axis (m)")
+      .def_readwrite("pole_max_occluded", &S::pole_max_occluded,
+                     "a pole is kept if at most this share of the points beside either side lie nearer [0, 1]")
       .def_readwrite("building_min_top", &S::building_min_top, "tall: reaches this high above the ground (m)")
       .def_readwrite("building_min_length", &S::building_min_length, "building: length at least (m)")
       .def_readwrite("fence_max_top", &S::fence_max_top, "fence: ends below this height (m)")

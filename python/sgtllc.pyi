@@ -139,6 +139,7 @@ class SegmentRuleConfig:
     pole_min_span: float
     pole_voxel: float
     pole_radius: float
+    pole_max_occluded: float
     building_min_top: float
     building_min_length: float
     fence_max_top: float

@@ -45,6 +45,7 @@ void validateLabellerConfig(const LabellerConfig& l, const LabelConfig& labels) 
   checkReal("labeller.segments.pole_min_span", s.pole_min_span, {0.0, false}, {100.0});
   checkReal("labeller.segments.pole_voxel", s.pole_voxel, {0.05}, {10.0});
   checkReal("labeller.segments.pole_radius", s.pole_radius, {0.0, false}, {10.0});
+  checkReal("labeller.segments.pole_max_occluded", s.pole_max_occluded, {0.0}, {1.0});
   checkReal("labeller.segments.building_min_top", s.building_min_top, {0.0, false}, {100.0});
   checkReal("labeller.segments.building_min_length", s.building_min_length, {0.0, false}, {1000.0});
   checkReal("labeller.segments.fence_max_top", s.fence_max_top, {0.0, false}, {100.0});

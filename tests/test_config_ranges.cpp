@@ -121,6 +121,7 @@ std::vector<Range> ranges() {
   r.push_back({ls + "pole_slice_high", {"0.51", "100"}, {"0", "101"}, "(0, 100]"});
   r.push_back({ls + "pole_voxel", {"0.05", "10"}, {"0.04", "11"}, "[0.05, 10]"});
   r.push_back({ls + "pole_radius", {"1e-09", "10"}, {"0", "10.5"}, "(0, 10]"});
+  r.push_back({ls + "pole_max_occluded", {"0", "1"}, {"-0.01", "1.01"}, "[0, 1]"});
   for (const char* k : {"building_min_length", "fence_min_length"}) {
     r.push_back({ls + k, {"1e-09", "1000"}, {"0", "1001"}, "(0, 1000]"});
   }
@@ -220,8 +221,8 @@ TEST(ConfigRanges, TheTableCoversEveryNumericKey) {
     EXPECT_TRUE(tested.count(key)) << "no range row for " << key;
     ++numeric;
   }
-  // 8 classes incl. vehicle, 40 other keys, 19 backend.*, 16 registration.*, 26 labeller.*
-  EXPECT_EQ(numeric, 8 * 3 + 40 + 19 + 16 + 26);
+  // 8 classes incl. vehicle, 40 other keys, 19 backend.*, 16 registration.*, 27 labeller.*
+  EXPECT_EQ(numeric, 8 * 3 + 40 + 19 + 16 + 27);
 }
 
 TEST(ConfigRanges, Sigma2RangeFollowsTheNodeScore) {

@@ -65,3 +65,23 @@ def test_revisit_from_scans_alone_equals_the_cli(cli):
     assert all(a.similarity == 0.0 for a in guided)
     assert sgtllc.Config().verification.guided_matching
     np.testing.assert_allclose(r.T_match_query, np.array(expected["T_match_query"]), rtol=0, atol=1e-6)
+
+
+def test_poles_must_be_seen_whole():
+    # A thin upright segment cut off at a side by nearer points is a strip seen through a gap, not a pole
+    # (docs/labeller.md §4, "Seen whole"). On the real scan 4501 the rule takes away pole points that the
+    # ground truth calls building or vegetation, and keeps its trunks.
+    scan = sgtllc.read_kitti_bin(str(QUERY_BIN))
+    truth = np.fromfile(str(QUERY_BIN).replace("velodyne", "labels").replace(".bin", ".label"), dtype=np.uint32)
+    truth &= 0xFFFF
+    config = sgtllc.LabellerConfig()
+    assert config.segments.pole_max_occluded == 0.75
+    seen_whole, _ = sgtllc.label_scan(scan, config)
+    config.segments.pole_max_occluded = 1.0  # the rule off
+    every_pole, _ = sgtllc.label_scan(scan, config)
+    wrong = np.isin(truth, [50, 70])  # building, vegetation
+    trunk = truth == 71
+    assert np.count_nonzero((seen_whole == 5) & wrong) < 0.5 * np.count_nonzero((every_pole == 5) & wrong)
+    assert np.count_nonzero((seen_whole == 5) & trunk) == np.count_nonzero((every_pole == 5) & trunk)
+    # A pole seen whole was a pole before as well: the rule only takes poles away.
+    assert np.all(every_pole[seen_whole == 5] == 5)

@@ -46,6 +46,8 @@ void addLabellerFields(const BackendFieldMakers& add) {
   rule_number("pole_voxel", "voxel leaf of the pole slice (m)", [](S& s) -> double& { return s.pole_voxel; });
   rule_number("pole_radius", "points this close to a pole axis in the slice are pole (m)",
               [](S& s) -> double& { return s.pole_radius; });
+  rule_number("pole_max_occluded", "a pole is kept if at most this share of the points beside a side lie nearer",
+              [](S& s) -> double& { return s.pole_max_occluded; });
   rule_number("building_min_top", "a tall segment reaches this high above the ground (m)",
               [](S& s) -> double& { return s.building_min_top; });
   rule_number("building_min_length", "a building is at least this long (m)",

@@ -12,6 +12,7 @@
 #include "sgtllc/label/ground.h"
 #include "sgtllc/label/segmentation.h"
 #include "sgtllc/label/shape_features.h"
+#include "sgtllc/label/side_view.h"
 
 namespace sgtllc::label {
 namespace {
@@ -24,6 +25,10 @@ constexpr double kScattered = 0.15;
 /// How far above the pole slice (m) the points around a pole axis still count as pole: the trunk's top below
 /// the crown, not the crown.
 constexpr double kPoleAboveSlice = 0.5;
+/// A pole is seen whole if, within kBeside m beside each side of it, at most pole_max_occluded of the points lie
+/// more than kNearer m nearer the sensor (docs/labeller.md §4, "Seen whole").
+constexpr double kBeside = 0.6;
+constexpr double kNearer = 0.5;
 
 struct SegmentSummary {
   Moments moments;
@@ -69,6 +74,17 @@ int8_t classOf(const SegmentSummary& s, const SegmentRuleConfig& r) {
   return kDropped;
 }
 
+/// The points of each segment k with @p wanted[k], in point order (empty lists for the others).
+std::vector<std::vector<int>> membersOf(const std::vector<int>& point_voxel, const std::vector<int>& voxel_segment,
+                                        const std::vector<uint8_t>& wanted) {
+  std::vector<std::vector<int>> members(wanted.size());
+  for (size_t i = 0; i < point_voxel.size(); ++i) {
+    const int v = point_voxel[i];
+    if (v >= 0 && wanted[voxel_segment[v]]) members[voxel_segment[v]].push_back(static_cast<int>(i));
+  }
+  return members;
+}
+
 /// Poles and trunks inside larger segments (a trunk under its crown, a pole touching a hedge): the points of a
 /// horizontal slice of the scene, pole_slice_low..pole_slice_high above the ground, are segmented on their own;
 /// a slice component that is thin (4 std devs ≤ pole_max_width) and spans pole_min_span of height is a pole
@@ -77,7 +93,7 @@ int8_t classOf(const SegmentSummary& s, const SegmentRuleConfig& r) {
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole
 /// landmarks extracted from 3-D lidar scans", ECMR 2019 (docs/labeller.md §4).
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
-               const SegmentRuleConfig& r, Labelling* out) {
+               const SideView& view, const SegmentRuleConfig& r, Labelling* out) {
   const size_t n = points.size();
   std::vector<uint8_t> in_slice(n, 0);
   for (size_t i = 0; i < n; ++i) {
@@ -102,9 +118,14 @@ void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<flo
   };
   std::vector<Axis> axes;
   std::vector<int> part_axis(parts.size(), -1);
+  std::vector<uint8_t> thin(parts.size(), 0);
   for (size_t k = 0; k < parts.size(); ++k) {
-    if (parts[k].count() < r.min_points || high[k] - low[k] < r.pole_min_span) continue;
-    if (horizontalExtent(parts[k].covariance()).first > r.pole_max_width) continue;
+    thin[k] = parts[k].count() >= r.min_points && high[k] - low[k] >= r.pole_min_span &&
+              horizontalExtent(parts[k].covariance()).first <= r.pole_max_width;
+  }
+  const std::vector<std::vector<int>> members = membersOf(slice.point_voxel, slice.voxel_segment, thin);
+  for (size_t k = 0; k < parts.size(); ++k) {
+    if (!thin[k] || view.occludedSide(members[k], kBeside, kNearer) > r.pole_max_occluded) continue;
     part_axis[k] = static_cast<int>(axes.size());
     axes.push_back({parts[k].mean().head<2>(), -1});
   }
@@ -167,14 +188,26 @@ Labelling GeometricLabeller::classify(const std::vector<Eigen::Vector3f>& points
     if (f.scattering >= kScattered) ++s.scattered_voxels;
   }
   std::vector<int8_t> segment_class(segments.size());
-  for (size_t k = 0; k < segments.size(); ++k) segment_class[k] = classOf(segments[k], rules);
+  std::vector<uint8_t> pole(segments.size(), 0);
+  for (size_t k = 0; k < segments.size(); ++k) {
+    segment_class[k] = classOf(segments[k], rules);
+    pole[k] = segment_class[k] == kPole;
+  }
+  // A thin upright segment hidden at a side behind nearer points is a strip of something seen through a gap.
+  const SideView view(points, use);
+  const std::vector<std::vector<int>> pole_members = membersOf(seg.point_voxel, seg.voxel_segment, pole);
+  for (size_t k = 0; k < segments.size(); ++k) {
+    if (pole[k] && view.occludedSide(pole_members[k], kBeside, kNearer) > rules.pole_max_occluded) {
+      segment_class[k] = kDropped;
+    }
+  }
   for (size_t i = 0; i < n; ++i) {
     const int v = seg.point_voxel[i];
     if (v < 0) continue;
     out.segment[i] = seg.voxel_segment[v];
     out.classes[i] = segment_class[seg.voxel_segment[v]];
   }
-  markPoles(points, ground.height, rules, &out);
+  markPoles(points, ground.height, view, rules, &out);
   out.ground = std::move(ground.ground);
   return out;
 }

@@ -47,6 +47,10 @@ struct SegmentRuleConfig {
   double pole_min_span = 0.9;
   double pole_voxel = 0.25;
   double pole_radius = 0.4;
+  /// A pole (segment or slice section) is kept only if on neither side more than this share of the points just
+  /// beside it lie nearer the sensor: seen whole, not a strip of a wall or crown between occluders
+  /// (docs/labeller.md §4, "Seen whole"); 1 keeps every pole [0, 1].
+  double pole_max_occluded = 0.75;
   /// A tall segment reaches at least this high above the ground (m): a building if long with walls, else
   /// vegetation (0, 100]
   double building_min_top = 2.3;

@@ -13,9 +13,10 @@
 namespace sgtllc::map {
 
 /// The format version this sgtllc writes and the only one it reads (docs/map-format.md, "Versions"): it rises
-/// whenever what a map records changes, including the configuration fields mapConfig() stores. Version 1 maps
-/// (before labeller.* was recorded) are refused as MapProblem::kOlderVersion.
-inline constexpr uint32_t kFormatVersion = 2;
+/// whenever what a map records changes, including the configuration fields mapConfig() stores. Older maps (1:
+/// before labeller.* was recorded; 2: before labeller.segments.pole_max_occluded) are refused as
+/// MapProblem::kOlderVersion.
+inline constexpr uint32_t kFormatVersion = 3;
 
 /// One section of a map file as found by decodeMap.
 struct SectionInfo {
