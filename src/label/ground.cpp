@@ -12,20 +12,12 @@
 
 #include <Eigen/Cholesky>
 
+#include "diamond_angle.h"
+
 namespace sgtllc::label {
 namespace {
 
 constexpr float kNoPoint = std::numeric_limits<float>::infinity();
-
-/// A monotonic stand-in for atan2(y, x) in [0, 4): the "diamond angle". Sectors of equal diamond angle are not of
-/// equal angle (at most 1.5× apart), which the ground test does not need; it is exact float arithmetic, cheap and
-/// the same on every machine.
-float diamondAngle(float x, float y) {
-  const float s = std::abs(x) + std::abs(y);
-  if (s == 0.0f) return 0.0f;
-  const float t = y / s;  // [-1, 1]
-  return x >= 0.0f ? (t >= 0.0f ? t : 4.0f + t) : 2.0f - t;
-}
 
 }  // namespace
 

@@ -1,24 +1,25 @@
 // What lies beside a segment as the sensor sees it (docs/labeller.md §4, "Seen whole"). The points are binned by
-// the diamond angle (exact float arithmetic, the ground grid's stand-in for atan2); a query turns its window's edges,
-// found in true angle from the members' mean range, into diamond angles and reads only the bins between them.
+// the diamond angle (diamond_angle.h, the ground grid's stand-in for atan2); a query turns its window's edges, found
+// in true angle from the members' mean range, into diamond angles and reads only the bins between them. Those edges
+// come from std::cos and std::sin, whose last bit may differ between maths libraries: the same on every run and
+// thread count, not necessarily bit for bit across platforms.
 #include "sgtllc/label/side_view.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "diamond_angle.h"
+
 namespace sgtllc::label {
 namespace {
 
 constexpr int kBins = 2048;
 constexpr double kPi = 3.14159265358979323846;
+/// The widest window beside a side (radians): at 1.2 m, 0.6 m beside is already half a radian.
+constexpr double kMaxWindow = 0.5;
 
-float diamondAngle(double x, double y) {
-  const double s = std::abs(x) + std::abs(y);
-  if (s == 0.0) return 0.0f;
-  const double t = y / s;
-  return static_cast<float>(x >= 0.0 ? (t >= 0.0 ? t : 4.0 + t) : 2.0 - t);
-}
+float diamondOf(double x, double y) { return static_cast<float>(diamondAngle(x, y)); }
 
 /// The true azimuth (radians, (−π, π]) of diamond angle @p d.
 double azimuthOf(float d) {
@@ -49,7 +50,7 @@ SideView::SideView(const std::vector<Eigen::Vector3f>& points, const std::vector
     const Eigen::Vector3f& p = points[i];
     if (!use[i] || !p.allFinite()) continue;
     const float r = std::sqrt(p.x() * p.x() + p.y() * p.y());
-    angle_[i] = diamondAngle(p.x(), p.y());
+    angle_[i] = diamondOf(p.x(), p.y());
     range_[i] = r;
     slope_[i] = r > 0.0f ? p.z() / r : 0.0f;
     if (r > 0.0f) ++bin_start_[binOf(angle_[i]) + 1];
@@ -88,12 +89,13 @@ double SideView::occludedSide(const std::vector<int>& members, double beside, do
     slope_lo = std::min(slope_lo, slope_[i]);
     slope_hi = std::max(slope_hi, slope_[i]);
   }
-  const double width = std::min(0.5, beside / range);  // radians
+  const double width = std::min(kMaxWindow, beside / range);  // radians
   const float near_range = static_cast<float>(range - nearer);
   double worst = 0.0;
-  for (const auto& [from, to] : {std::pair{centre + lo - width, centre + lo}, std::pair{centre + hi, centre + hi + width}}) {
-    const float d0 = diamondAngle(std::cos(from), std::sin(from));
-    const float d1 = diamondAngle(std::cos(to), std::sin(to));
+  const std::pair<double, double> sides[2] = {{centre + lo - width, centre + lo}, {centre + hi, centre + hi + width}};
+  for (const auto& [from, to] : sides) {
+    const float d0 = diamondOf(std::cos(from), std::sin(from));
+    const float d1 = diamondOf(std::cos(to), std::sin(to));
     const bool wraps = d1 < d0;  // the window crosses the diamond angle's 0
     int beside_points = 0, nearer_points = 0;
     const int b0 = binOf(d0), b1 = binOf(d1);

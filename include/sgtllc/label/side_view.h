@@ -18,14 +18,14 @@ class SideView {
   SideView(const std::vector<Eigen::Vector3f>& points, const std::vector<uint8_t>& use);
 
   /// For the points @p members (indices of indexed points; others are ignored): the indexed points
-  /// just beside them — within @p beside m of their left or right edge in azimuth, at their mean horizontal range,
-  /// and within their span of elevation — that lie more than @p nearer m nearer the sensor, as a share of the points
-  /// beside that side. Returns the larger of the two sides' shares; a side with no point beside it counts 0 (open
-  /// sky or beyond the range). Members within 1 m of the sensor, or fewer than 2, give 0.
+  /// just beside them — within @p beside m of their left or right edge in azimuth, at their mean horizontal range
+  /// (at most half a radian), and within their span of elevation — that lie more than @p nearer m nearer the sensor,
+  /// as a share of the points beside that side. Returns the larger of the two sides' shares; a side with no point
+  /// beside it counts 0 (open sky or beyond the range). Fewer than 2 members, or a mean range under 1 m, give 0.
   double occludedSide(const std::vector<int>& members, double beside, double nearer) const;
 
  private:
-  // Per point (NaN range for a point not indexed): the diamond angle in [0, 4), a monotone stand-in
+  // Per point (NaN range for a point not indexed): the diamond angle in [0, 4], a monotone stand-in
   // for the azimuth; the horizontal range; z / range, monotone in the elevation.
   std::vector<float> angle_;
   std::vector<float> range_;
