@@ -1,8 +1,8 @@
-// BackendConfig and its sections, field by field as in include/sgtllc/backend/backend_config.h (units and the
+// BackendConfig and its sections, field by field as in include/sgtllc/config/backend_config.h (units and the
 // model behind each group are documented there and in docs/backend.md).
 #include "bindings.h"
 #include "opaque.h"
-#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/config/backend_config.h"
 
 namespace sgtllc::python {
 

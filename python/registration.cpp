@@ -6,7 +6,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "sgtllc/registration/icp.h"
-#include "sgtllc/registration/registration_config.h"
+#include "sgtllc/config/registration_config.h"
 
 namespace sgtllc::python {
 

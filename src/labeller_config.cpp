@@ -1,4 +1,4 @@
-// Ranges of the labeller settings (label/labeller_config.h), in the style of Config::validate().
+// Ranges of the labeller settings (config/labeller_config.h), in the style of Config::validate().
 #include <cmath>
 #include <string>
 

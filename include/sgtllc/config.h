@@ -17,9 +17,9 @@
 #include <utility>
 #include <vector>
 
-#include "sgtllc/backend/backend_config.h"
-#include "sgtllc/label/labeller_config.h"
-#include "sgtllc/registration/registration_config.h"
+#include "sgtllc/config/backend_config.h"
+#include "sgtllc/config/labeller_config.h"
+#include "sgtllc/config/registration_config.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc {

@@ -1,4 +1,4 @@
-#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/config/backend_config.h"
 
 #include <cmath>
 #include <string>

@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/config/backend_config.h"
 #include "sgtllc/backend/pose_graph_types.h"
 
 namespace sgtllc::backend::internal {

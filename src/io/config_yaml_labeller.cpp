@@ -1,5 +1,5 @@
 // The `labeller.ground.*` and `labeller.segments.*` keys of the configuration YAML (config_fields.cpp); the fields
-// are documented in include/sgtllc/label/labeller_config.h.
+// are documented in include/sgtllc/config/labeller_config.h.
 #include "config_yaml_backend.h"
 
 namespace sgtllc::io::detail {

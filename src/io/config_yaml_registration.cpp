@@ -1,5 +1,5 @@
 // The `registration.*` keys of the configuration YAML (config_fields.cpp); the fields are documented in
-// include/sgtllc/registration/registration_config.h.
+// include/sgtllc/config/registration_config.h.
 #include "config_yaml_backend.h"
 
 namespace sgtllc::io::detail {

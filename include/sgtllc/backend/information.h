@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/config/backend_config.h"
 #include "sgtllc/backend/pose_graph_types.h"
 #include "sgtllc/types.h"
 #include "sgtllc/verification.h"

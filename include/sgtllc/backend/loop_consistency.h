@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/config/backend_config.h"
 #include "sgtllc/backend/odometry_chain.h"
 #include "sgtllc/backend/pose_graph_types.h"
 

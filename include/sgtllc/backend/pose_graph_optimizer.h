@@ -16,7 +16,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sgtllc/backend/backend_config.h"
+#include "sgtllc/config/backend_config.h"
 #include "sgtllc/backend/loop_consistency.h"
 #include "sgtllc/backend/odometry_chain.h"
 #include "sgtllc/backend/pose_graph_types.h"

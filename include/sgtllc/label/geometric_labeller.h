@@ -14,7 +14,7 @@
 
 #include <Eigen/Core>
 
-#include "sgtllc/label/labeller_config.h"
+#include "sgtllc/config/labeller_config.h"
 #include "sgtllc/labels.h"
 #include "sgtllc/types.h"
 

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "sgtllc/label/labeller_config.h"
+#include "sgtllc/config/labeller_config.h"
 
 namespace sgtllc::label {
 

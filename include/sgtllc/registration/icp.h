@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "sgtllc/registration/registration_config.h"
+#include "sgtllc/config/registration_config.h"
 
 namespace sgtllc {
 

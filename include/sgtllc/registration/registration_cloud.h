@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "sgtllc/labels.h"
-#include "sgtllc/registration/registration_config.h"
+#include "sgtllc/config/registration_config.h"
 #include <utility>
 
 #include "sgtllc/types.h"
