@@ -1,7 +1,9 @@
 // Geometric labeller: time per scan (median, p99 over --repeat runs of every scan) and, for scans given with a
 // reference label file, per-class precision / recall / IoU against it (docs/labeller.md, BENCHMARKS.md).
-//   sgtllc_bench_labeller [--repeat N] [--config FILE] SCAN.bin[,REFERENCE.label] ...
+//   sgtllc_bench_labeller [--repeat N] [--config FILE] [--fresh-memory] SCAN.bin[,REFERENCE.label] ...
 // --config takes the labeller.* keys of a YAML configuration (the rules measured against the defaults).
+// Freed memory is kept for the next scan, as the command-line tool keeps it (memory_reuse.h); --fresh-memory
+// leaves glibc's defaults, which hand scan-sized buffers back to the system after every scan.
 // Trunk and pole are one class in the labeller, so the reference's trunk counts as pole. A folder argument takes
 // its velodyne/*.bin (timing only).
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/labels.h"
+#include "sgtllc/memory_reuse.h"
 
 namespace {
 
@@ -35,11 +38,14 @@ void printCounts(const char* title, const sgtllc::eval::ClassAgreement& k) {
 int main(int argc, char** argv) {
   int repeat = 5;
   std::string config_path;
+  bool fresh_memory = false;
   std::vector<std::pair<std::string, std::string>> inputs;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--repeat" && a + 1 < argc) {
       repeat = std::max(1, std::stoi(argv[++a]));
+    } else if (arg == "--fresh-memory") {
+      fresh_memory = true;
     } else if (arg == "--config" && a + 1 < argc) {
       config_path = argv[++a];
     } else if (std::filesystem::is_directory(arg)) {
@@ -55,9 +61,10 @@ int main(int argc, char** argv) {
     }
   }
   if (inputs.empty()) {
-    std::fprintf(stderr, "usage: %s [--repeat N] [--config FILE] SCAN.bin[,REFERENCE.label] ... | SEQUENCE_DIR\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--repeat N] [--config FILE] [--fresh-memory] SCAN.bin[,REFERENCE.label] ... | SEQUENCE_DIR\n", argv[0]);
     return 2;
   }
+  if (!fresh_memory) sgtllc::reuseFreedMemory();
   try {
     const sgtllc::label::GeometricLabeller labeller(
         config_path.empty() ? sgtllc::LabellerConfig{} : sgtllc::io::loadConfig(config_path).labeller);

@@ -363,6 +363,9 @@ class RelocalizationTracker:
     def localize_nodes(self, centres: ArrayLike, classes: ArrayLike) -> Relocalization: ...
     def reset(self) -> None: ...
 
+# --- the process (module.cpp) ---
+def reuse_freed_memory(keep_bytes: int = 33554432) -> bool: ...  # call once, at start
+
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8
 def label_scan_ids(points: ArrayLike, config: LabellerConfig = ...) -> np.ndarray: ...  # (N,) uint32 SemanticKITTI ids

@@ -14,7 +14,11 @@
 namespace sgtllc {
 namespace {
 
-using label::SideView;
+/// The share occluded at the worse side of @p members, all points used.
+double occludedSide(const std::vector<Eigen::Vector3f>& points, const std::vector<int>& members, double nearer,
+                    uint8_t use = 1) {
+  return label::occludedSides(points, std::vector<uint8_t>(points.size(), use), {members}, 0.6, nearer)[0];
+}
 
 /// A vertical column of 21 points at horizontal range @p range and azimuth @p azimuth (radians), evenly spread
 /// over the elevations z / range in [−half_slope, half_slope].
@@ -45,8 +49,7 @@ Scene poleBetween(double azimuth, const std::vector<double>& left, const std::ve
 }
 
 double occluded(const Scene& s) {
-  const SideView view(s.points, std::vector<uint8_t>(s.points.size(), 1));
-  return view.occludedSide(s.pole, 0.6, 0.5);
+  return occludedSide(s.points, s.pole, 0.5);
 }
 
 TEST(SideView, PoleAgainstAWallIsSeenWhole) {
@@ -61,17 +64,32 @@ TEST(SideView, PoleAgainstAWallIsSeenWhole) {
 
 TEST(SideView, TooFewMembersOrTooNearSayNothing) {
   Scene s = poleBetween(0.7, {10, 10}, {10, 10});
-  const SideView view(s.points, std::vector<uint8_t>(s.points.size(), 1));
-  EXPECT_EQ(view.occludedSide(s.pole, 0.6, 0.5), 1.0);
-  EXPECT_EQ(view.occludedSide({s.pole[0]}, 0.6, 0.5), 0.0);  // one point has no width
-  EXPECT_EQ(view.occludedSide({}, 0.6, 0.5), 0.0);
+  EXPECT_EQ(occludedSide(s.points, s.pole, 0.5), 1.0);
+  EXPECT_EQ(occludedSide(s.points, {s.pole[0]}, 0.5), 0.0);  // one point has no width
+  EXPECT_EQ(occludedSide(s.points, {}, 0.5), 0.0);
   // Members at 0.5 m from the sensor: nothing to judge.
   std::vector<Eigen::Vector3f> near = {{0.5f, 0.0f, 0.0f}, {0.5f, 0.01f, 0.1f}, {0.2f, 0.05f, 0.0f}};
-  const SideView near_view(near, std::vector<uint8_t>(near.size(), 1));
-  EXPECT_EQ(near_view.occludedSide({0, 1}, 0.6, 0.1), 0.0);
-  // Points not indexed (use 0) are never beside anything.
-  const SideView unindexed(s.points, std::vector<uint8_t>(s.points.size(), 0));
-  EXPECT_EQ(unindexed.occludedSide(s.pole, 0.6, 0.5), 0.0);
+  EXPECT_EQ(occludedSide(near, {0, 1}, 0.1), 0.0);
+  // Points not used (use 0) are never members nor beside anything.
+  EXPECT_EQ(occludedSide(s.points, s.pole, 0.5, 0), 0.0);
+}
+
+TEST(SideView, CandidatesAnsweredTogetherAsAlone) {
+  // Two poles in one scene, one hidden at a side and one seen whole, with a candidate too small to judge between
+  // them: asked together, each gets the share it gets alone (only the bins their windows reach are indexed).
+  Scene s = poleBetween(0.7, {10, 25, 10, 25, 25}, {25, 12, 25, 25});
+  const Scene t = poleBetween(-2.0, {25, 25}, {25, 25});
+  std::vector<int> second;
+  for (int i : t.pole) second.push_back(i + static_cast<int>(s.points.size()));
+  s.points.insert(s.points.end(), t.points.begin(), t.points.end());
+  const std::vector<double> together =
+      label::occludedSides(s.points, std::vector<uint8_t>(s.points.size(), 1), {s.pole, {0}, second}, 0.6, 0.5);
+  ASSERT_EQ(together.size(), 3u);
+  EXPECT_DOUBLE_EQ(together[0], 0.4);
+  EXPECT_EQ(together[1], 0.0);
+  EXPECT_EQ(together[2], 0.0);
+  EXPECT_DOUBLE_EQ(occludedSide(s.points, s.pole, 0.5), 0.4);
+  EXPECT_TRUE(label::occludedSides(s.points, std::vector<uint8_t>(s.points.size(), 1), {}, 0.6, 0.5).empty());
 }
 
 TEST(SideView, SharesOfNearerPointsPerSide) {

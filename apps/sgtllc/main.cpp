@@ -8,8 +8,12 @@
 #include "commands.h"
 #include "common.h"
 #include "sgtllc/io/quote.h"
+#include "sgtllc/memory_reuse.h"
 
 int main(int argc, char** argv) {
+  // Frame after frame, the buffers one frame frees serve the next instead of being faulted in afresh
+  // (memory_reuse.h; BENCHMARKS.md, "Memory kept for the next frame").
+  sgtllc::reuseFreedMemory();
   CLI::App app{"sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", sgtllc::cli::softwareText());

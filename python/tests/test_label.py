@@ -85,3 +85,14 @@ def test_poles_must_be_seen_whole():
     assert np.count_nonzero((seen_whole == 5) & trunk) == np.count_nonzero((every_pole == 5) & trunk)
     # A pole seen whole was a pole before as well: the rule only takes poles away.
     assert np.all(every_pole[seen_whole == 5] == 5)
+
+
+def test_reuse_freed_memory_keeps_results():
+    # Process-wide and glibc-only (memory_reuse.h): the labels are the same with freed memory kept or handed back.
+    import platform
+    scan = sgtllc.read_kitti_bin(str(QUERY_BIN))
+    before = sgtllc.label_scan_ids(scan)
+    assert sgtllc.reuse_freed_memory() is (platform.libc_ver()[0] == "glibc")
+    np.testing.assert_array_equal(sgtllc.label_scan_ids(scan), before)
+    with pytest.raises(TypeError):
+        sgtllc.reuse_freed_memory(-1)

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include <Eigen/Eigenvalues>
 
@@ -89,12 +88,12 @@ std::vector<std::vector<int>> membersOf(const std::vector<int>& point_voxel, con
 /// Poles and trunks inside larger segments (a trunk under its crown, a pole touching a hedge): the points of a
 /// horizontal slice of the scene, pole_slice_low..pole_slice_high above the ground, are segmented on their own;
 /// a slice component that is thin (4 std devs ≤ pole_max_width), spans pole_min_span of height and is seen whole
-/// by @p view (none: every thin component is) is a pole section, and every point of its segment within pole_radius
+/// against the points flagged in @p seen (none: every thin component is) is a pole section, and every point of its segment within pole_radius
 /// of its axis, up to kPoleAboveSlice above the slice, becomes kPole.
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole
 /// landmarks extracted from 3-D lidar scans", ECMR 2019 (docs/labeller.md §4).
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
-               const SideView* view, const SegmentRuleConfig& r, Labelling* out) {
+               const std::vector<uint8_t>* seen, const SegmentRuleConfig& r, Labelling* out) {
   const size_t n = points.size();
   std::vector<uint8_t> in_slice(n, 0);
   for (size_t i = 0; i < n; ++i) {
@@ -124,10 +123,11 @@ void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<flo
     thin[k] = parts[k].count() >= r.min_points && high[k] - low[k] >= r.pole_min_span &&
               horizontalExtent(parts[k].covariance()).first <= r.pole_max_width;
   }
-  const std::vector<std::vector<int>> members =
-      view ? membersOf(slice.point_voxel, slice.voxel_segment, thin) : std::vector<std::vector<int>>();
+  const std::vector<double> occluded =
+      seen ? occludedSides(points, *seen, membersOf(slice.point_voxel, slice.voxel_segment, thin), kBeside, kNearer)
+           : std::vector<double>(parts.size(), 0.0);
   for (size_t k = 0; k < parts.size(); ++k) {
-    if (!thin[k] || (view && view->occludedSide(members[k], kBeside, kNearer) > r.pole_max_occluded)) continue;
+    if (!thin[k] || occluded[k] > r.pole_max_occluded) continue;
     part_axis[k] = static_cast<int>(axes.size());
     axes.push_back({parts[k].mean().head<2>(), -1});
   }
@@ -196,15 +196,13 @@ Labelling GeometricLabeller::classify(const std::vector<Eigen::Vector3f>& points
     pole[k] = segment_class[k] == kPole;
   }
   // A thin upright segment hidden at a side behind nearer points is a strip of something seen through a gap
-  // (pole_max_occluded 1 keeps every pole: then the side view is not built).
-  std::optional<SideView> view;
-  if (rules.pole_max_occluded < 1.0) {
-    view.emplace(points, use);
-    const std::vector<std::vector<int>> pole_members = membersOf(seg.point_voxel, seg.voxel_segment, pole);
+  // (pole_max_occluded 1 keeps every pole: then nothing is looked at).
+  const bool seen_whole = rules.pole_max_occluded < 1.0;
+  if (seen_whole) {
+    const std::vector<double> occluded =
+        occludedSides(points, use, membersOf(seg.point_voxel, seg.voxel_segment, pole), kBeside, kNearer);
     for (size_t k = 0; k < segments.size(); ++k) {
-      if (pole[k] && view->occludedSide(pole_members[k], kBeside, kNearer) > rules.pole_max_occluded) {
-        segment_class[k] = kDropped;
-      }
+      if (pole[k] && occluded[k] > rules.pole_max_occluded) segment_class[k] = kDropped;
     }
   }
   for (size_t i = 0; i < n; ++i) {
@@ -213,7 +211,7 @@ Labelling GeometricLabeller::classify(const std::vector<Eigen::Vector3f>& points
     out.segment[i] = seg.voxel_segment[v];
     out.classes[i] = segment_class[seg.voxel_segment[v]];
   }
-  markPoles(points, ground.height, view ? &*view : nullptr, rules, &out);
+  markPoles(points, ground.height, seen_whole ? &use : nullptr, rules, &out);
   out.ground = std::move(ground.ground);
   return out;
 }

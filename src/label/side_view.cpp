@@ -1,8 +1,11 @@
-// What lies beside a segment as the sensor sees it (docs/labeller.md §4, "Seen whole"). The points are binned by
-// the diamond angle (diamond_angle.h, the ground grid's stand-in for atan2); a query turns its window's edges, found
-// in true angle from the members' mean range, into diamond angles and reads only the bins between them. Those edges
-// come from std::cos and std::sin, whose last bit may differ between maths libraries: the same on every run and
-// thread count, not necessarily bit for bit across platforms.
+// What lies beside a segment as the sensor sees it (docs/labeller.md §4, "Seen whole"). Points are placed by the
+// diamond angle (diamond_angle.h, the ground grid's stand-in for atan2) in kBins bins. The candidates' windows are
+// found first, in true angle from each candidate's mean range, and turned into diamond angles; one pass over the
+// scan then keeps only the points in bins some window reaches, sorted by bin, and each window reads its bins. A
+// scan-sized index (three floats and an index per point, 1.9 MB for a 120 k-point scan) cost more in fresh memory
+// than the search itself (BENCHMARKS.md, "Poles seen whole"). The edges come from std::cos and std::sin, whose last
+// bit may differ between maths libraries: the same on every run and thread count, not necessarily bit for bit
+// across platforms.
 #include "sgtllc/label/side_view.h"
 
 #include <algorithm>
@@ -19,7 +22,22 @@ constexpr double kPi = 3.14159265358979323846;
 /// The widest window beside a side (radians): at 1.2 m, 0.6 m beside is already half a radian.
 constexpr double kMaxWindow = 0.5;
 
-float diamondOf(double x, double y) { return static_cast<float>(diamondAngle(x, y)); }
+/// A point as the side view sees it: diamond angle in [0, 4] (monotone in the azimuth), horizontal range, and
+/// z / range (monotone in the elevation).
+struct Seen {
+  float angle;
+  float range;
+  float slope;
+};
+
+/// @p p as seen from the origin; false if it is not to be seen (not used, not finite, or on the vertical axis).
+bool see(const Eigen::Vector3f& p, uint8_t use, Seen* s) {
+  if (!use || !p.allFinite()) return false;
+  const float r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  if (!(r > 0.0f)) return false;
+  *s = {static_cast<float>(diamondAngle<double>(p.x(), p.y())), r, p.z() / r};
+  return true;
+}
 
 /// The true azimuth (radians, (−π, π]) of diamond angle @p d.
 double azimuthOf(float d) {
@@ -30,6 +48,8 @@ double azimuthOf(float d) {
   return std::atan2(kY[q][0] + kY[q][1] * t, kX[q][0] + kX[q][1] * t);
 }
 
+float diamondOfAzimuth(double a) { return static_cast<float>(diamondAngle(std::cos(a), std::sin(a))); }
+
 int binOf(float d) { return std::min(kBins - 1, std::max(0, static_cast<int>(d * (kBins / 4.0f)))); }
 
 /// Wraps an angle difference into (−π, π].
@@ -39,78 +59,108 @@ double wrap(double a) {
   return a;
 }
 
-}  // namespace
+/// One side of one candidate: the open interval (d0, d1) of diamond angles (across 0 when d1 < d0), the
+/// members' span of z / range, and the range under which a point beside them is nearer.
+struct Window {
+  float d0, d1;
+  float slope_lo, slope_hi;
+  float near_range;
+  int candidate;
 
-SideView::SideView(const std::vector<Eigen::Vector3f>& points, const std::vector<uint8_t>& use)
-    : angle_(points.size(), 0.0f),
-      range_(points.size(), std::numeric_limits<float>::quiet_NaN()),
-      slope_(points.size(), 0.0f),
-      bin_start_(kBins + 1, 0) {
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3f& p = points[i];
-    if (!use[i] || !p.allFinite()) continue;
-    const float r = std::sqrt(p.x() * p.x() + p.y() * p.y());
-    angle_[i] = diamondOf(p.x(), p.y());
-    range_[i] = r;
-    slope_[i] = r > 0.0f ? p.z() / r : 0.0f;
-    if (r > 0.0f) ++bin_start_[binOf(angle_[i]) + 1];
+  bool wraps() const { return d1 < d0; }
+  bool contains(const Seen& s) const {
+    const bool inside = wraps() ? (s.angle > d0 || s.angle < d1) : (s.angle > d0 && s.angle < d1);
+    return inside && s.slope >= slope_lo && s.slope <= slope_hi;
   }
-  for (int b = 0; b < kBins; ++b) bin_start_[b + 1] += bin_start_[b];
-  order_.resize(static_cast<size_t>(bin_start_[kBins]));
-  std::vector<int> next(bin_start_.begin(), bin_start_.end() - 1);
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (range_[i] > 0.0f) order_[next[binOf(angle_[i])]++] = static_cast<int>(i);
+  /// Calls @p f(b) for the bins from d0's to d1's, across the last bin when the window wraps.
+  template <typename F>
+  void forEachBin(F f) const {
+    const int b1 = binOf(d1);
+    for (int b = binOf(d0);; b = (b + 1) % kBins) {
+      f(b);
+      if (b == b1) break;
+    }
   }
-}
+};
 
-double SideView::occludedSide(const std::vector<int>& members, double beside, double nearer) const {
+/// The two windows of a candidate (none if it has fewer than 2 seen members or lies within 1 m).
+void windowsOf(const std::vector<Eigen::Vector3f>& points, const std::vector<uint8_t>& use,
+               const std::vector<int>& members, int candidate, double beside, double nearer,
+               std::vector<Window>* out) {
   // The members' mean range and azimuth, their azimuth interval about it and their span of elevation.
+  std::vector<Seen> seen;
+  seen.reserve(members.size());
+  Seen s;
   double range = 0.0, cx = 0.0, cy = 0.0;
-  int count = 0;
   for (int i : members) {
-    if (!(range_[i] > 0.0f)) continue;
-    const double a = azimuthOf(angle_[i]);
-    range += range_[i];
+    if (!see(points[i], use[i], &s)) continue;
+    const double a = azimuthOf(s.angle);
+    range += s.range;
     cx += std::cos(a);
     cy += std::sin(a);
-    ++count;
+    seen.push_back(s);
   }
-  if (count < 2) return 0.0;
-  range /= count;
-  if (range < 1.0) return 0.0;
+  if (seen.size() < 2) return;
+  range /= static_cast<double>(seen.size());
+  if (range < 1.0) return;
   const double centre = std::atan2(cy, cx);
   double lo = 0.0, hi = 0.0;
   float slope_lo = std::numeric_limits<float>::infinity(), slope_hi = -slope_lo;
-  for (int i : members) {
-    if (!(range_[i] > 0.0f)) continue;
-    const double a = wrap(azimuthOf(angle_[i]) - centre);
+  for (const Seen& m : seen) {
+    const double a = wrap(azimuthOf(m.angle) - centre);
     lo = std::min(lo, a);
     hi = std::max(hi, a);
-    slope_lo = std::min(slope_lo, slope_[i]);
-    slope_hi = std::max(slope_hi, slope_[i]);
+    slope_lo = std::min(slope_lo, m.slope);
+    slope_hi = std::max(slope_hi, m.slope);
   }
   const double width = std::min(kMaxWindow, beside / range);  // radians
   const float near_range = static_cast<float>(range - nearer);
-  double worst = 0.0;
   const std::pair<double, double> sides[2] = {{centre + lo - width, centre + lo}, {centre + hi, centre + hi + width}};
   for (const auto& [from, to] : sides) {
-    const float d0 = diamondOf(std::cos(from), std::sin(from));
-    const float d1 = diamondOf(std::cos(to), std::sin(to));
-    const bool wraps = d1 < d0;  // the window crosses the diamond angle's 0
+    out->push_back({diamondOfAzimuth(from), diamondOfAzimuth(to), slope_lo, slope_hi, near_range, candidate});
+  }
+}
+
+}  // namespace
+
+std::vector<double> occludedSides(const std::vector<Eigen::Vector3f>& points, const std::vector<uint8_t>& use,
+                                  const std::vector<std::vector<int>>& candidates, double beside, double nearer) {
+  std::vector<double> worst(candidates.size(), 0.0);
+  std::vector<Window> windows;
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    windowsOf(points, use, candidates[c], static_cast<int>(c), beside, nearer, &windows);
+  }
+  if (windows.empty()) return worst;
+  std::vector<uint8_t> wanted(kBins, 0);
+  for (const Window& w : windows) w.forEachBin([&](int b) { wanted[b] = 1; });
+
+  // The seen points in wanted bins, sorted by bin (counting sort; in point order within a bin).
+  std::vector<std::pair<int, Seen>> kept;
+  Seen s;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!see(points[i], use[i], &s)) continue;
+    const int b = binOf(s.angle);
+    if (wanted[b]) kept.emplace_back(b, s);
+  }
+  std::vector<int> start(kBins + 1, 0);
+  for (const auto& k : kept) ++start[k.first + 1];
+  for (int b = 0; b < kBins; ++b) start[b + 1] += start[b];
+  std::vector<Seen> by_bin(kept.size());
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (const auto& k : kept) by_bin[next[k.first]++] = k.second;
+
+  for (const Window& w : windows) {
     int beside_points = 0, nearer_points = 0;
-    const int b0 = binOf(d0), b1 = binOf(d1);
-    for (int b = b0;; b = (b + 1) % kBins) {
-      for (int k = bin_start_[b]; k < bin_start_[b + 1]; ++k) {
-        const int i = order_[k];
-        const float d = angle_[i];
-        const bool inside = wraps ? (d > d0 || d < d1) : (d > d0 && d < d1);
-        if (!inside || slope_[i] < slope_lo || slope_[i] > slope_hi) continue;
+    w.forEachBin([&](int b) {
+      for (int k = start[b]; k < start[b + 1]; ++k) {
+        if (!w.contains(by_bin[k])) continue;
         ++beside_points;
-        nearer_points += range_[i] < near_range;
+        nearer_points += by_bin[k].range < w.near_range;
       }
-      if (b == b1) break;
+    });
+    if (beside_points > 0) {
+      worst[w.candidate] = std::max(worst[w.candidate], static_cast<double>(nearer_points) / beside_points);
     }
-    if (beside_points > 0) worst = std::max(worst, static_cast<double>(nearer_points) / beside_points);
   }
   return worst;
 }

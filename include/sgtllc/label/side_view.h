@@ -11,27 +11,15 @@
 
 namespace sgtllc::label {
 
-/// The points of one scan indexed by azimuth around the sensor (the origin). Immutable after construction.
-class SideView {
- public:
-  /// Indexes the points with @p use[i] != 0 (and finite); @p use has one flag per point.
-  SideView(const std::vector<Eigen::Vector3f>& points, const std::vector<uint8_t>& use);
-
-  /// For the points @p members (indices of indexed points; others are ignored): the indexed points
-  /// just beside them — within @p beside m of their left or right edge in azimuth, at their mean horizontal range
-  /// (at most half a radian), and within their span of elevation — that lie more than @p nearer m nearer the sensor,
-  /// as a share of the points beside that side. Returns the larger of the two sides' shares; a side with no point
-  /// beside it counts 0 (open sky or beyond the range). Fewer than 2 members, or a mean range under 1 m, give 0.
-  double occludedSide(const std::vector<int>& members, double beside, double nearer) const;
-
- private:
-  // Per point (NaN range for a point not indexed): the diamond angle in [0, 4], a monotone stand-in
-  // for the azimuth; the horizontal range; z / range, monotone in the elevation.
-  std::vector<float> angle_;
-  std::vector<float> range_;
-  std::vector<float> slope_;
-  std::vector<int> bin_start_;  ///< kBins + 1 offsets into order_
-  std::vector<int> order_;      ///< the indexed points by azimuth bin, in point order within a bin
-};
+/// For each candidate of @p candidates (indices into @p points): the points just beside it — within @p beside m
+/// of its left or right edge in azimuth about the sensor (the origin), at its mean horizontal range (at most half
+/// a radian), and within its span of elevation — that lie more than @p nearer m nearer the sensor, as a share of
+/// the points beside that side; the larger of the two sides' shares. Only points with @p use[i] != 0 (one flag per
+/// point) and finite coordinates count, as members or beside them. A side with no point beside it counts 0 (open
+/// sky or beyond the range); fewer than 2 members, or a mean range under 1 m, give 0.
+/// The candidates are answered together so that only the azimuths their windows reach are indexed: the cost is a
+/// pass over the points and memory for the points beside them, not for the scan (BENCHMARKS.md, "Poles seen whole").
+std::vector<double> occludedSides(const std::vector<Eigen::Vector3f>& points, const std::vector<uint8_t>& use,
+                                  const std::vector<std::vector<int>>& candidates, double beside, double nearer);
 
 }  // namespace sgtllc::label
