@@ -5,6 +5,11 @@
 
 namespace sgtllc {
 
+size_t Footprint::words(int half) {
+  const size_t side = 2 * static_cast<size_t>(std::max(half, 0));
+  return (side * side + 63) / 64;
+}
+
 bool Footprint::occupied(int i, int j) const {
   const int side = 2 * half;
   if (i < 0 || j < 0 || i >= side || j >= side) return false;
@@ -18,7 +23,7 @@ Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, co
   f.cell = static_cast<float>(config.footprint_cell);
   f.half = static_cast<int>(std::ceil(config.footprint_radius / config.footprint_cell));
   const int side = 2 * f.half;
-  f.bits.assign((static_cast<size_t>(side) * static_cast<size_t>(side) + 63) / 64, 0);
+  f.bits.assign(Footprint::words(f.half), 0);
   const float r2 = static_cast<float>(config.footprint_radius * config.footprint_radius);
   const size_t n = std::min(cloud.points.size(), cloud.labels.size());
   for (size_t p = 0; p < n; ++p) {

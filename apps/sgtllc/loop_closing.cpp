@@ -26,11 +26,20 @@ double processCpuMs() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
+/// Count, median, p99 and max of a list of times or distances, as the JSON and the summary line give them.
+struct Stats {
+  size_t count = 0;
+  double median = 0.0, p99 = 0.0, max = 0.0;
+};
+
+Stats statsOf(const std::vector<double>& v) {
+  return {v.size(), eval::percentile(v, 0.5), eval::percentile(v, 0.99),
+          v.empty() ? 0.0 : *std::max_element(v.begin(), v.end())};
+}
+
 Json statsJson(const std::vector<double>& v) {
-  return {{"count", v.size()},
-          {"median", eval::percentile(v, 0.5)},
-          {"p99", eval::percentile(v, 0.99)},
-          {"max", v.empty() ? 0.0 : *std::max_element(v.begin(), v.end())}};
+  const Stats s = statsOf(v);
+  return {{"count", s.count}, {"median", s.median}, {"p99", s.p99}, {"max", s.max}};
 }
 
 std::vector<backend::Edge> acceptedLoopEdges(const std::vector<ClosingLoop>& loops, const backend::BackendResult& r) {
@@ -306,13 +315,10 @@ std::string closingSummary(const std::vector<ClosingLoop>& loops, const Closing&
                   " iterations" + (closing.result.converged ? "" : " (not converged)") + ", " +
                   fixed(closing.ms, 1) + " ms\n";
   if (!closing.online_final_shift_m.empty()) {
-    const std::vector<double>& t = closing.online_solve_cpu_ms;
-    const std::vector<double>& d = closing.online_final_shift_m;
-    s += "  online re-solves: " + std::to_string(t.size()) + ", CPU median " + fixed(eval::percentile(t, 0.5), 1) +
-         " ms, p99 " + fixed(eval::percentile(t, 0.99), 1) + " ms, max " +
-         fixed(t.empty() ? 0.0 : *std::max_element(t.begin(), t.end()), 1) +
-         " ms; the final full solve moved the frames by median " + fixed(eval::percentile(d, 0.5), 3) +
-         " m, max " + fixed(*std::max_element(d.begin(), d.end()), 3) + " m\n";
+    const Stats t = statsOf(closing.online_solve_cpu_ms), d = statsOf(closing.online_final_shift_m);
+    s += "  online re-solves: " + std::to_string(t.count) + ", CPU median " + fixed(t.median, 1) + " ms, p99 " +
+         fixed(t.p99, 1) + " ms, max " + fixed(t.max, 1) + " ms; the final full solve moved the frames by median " +
+         fixed(d.median, 3) + " m, max " + fixed(d.max, 3) + " m\n";
   }
   if (c.nominal > 0) {
     s += "  " + std::to_string(c.nominal) + " loops without their own information use the nominal model\n";

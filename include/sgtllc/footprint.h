@@ -27,6 +27,8 @@ struct Footprint {
   bool dilated = false;
 
   bool empty() const { return bits.empty(); }
+  /// The 64-bit words of the bits of a grid of 2·@p half cells a side.
+  static size_t words(int half);
   bool occupied(int i, int j) const;
   size_t bytes() const { return bits.size() * sizeof(uint64_t); }
 };

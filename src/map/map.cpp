@@ -101,9 +101,7 @@ void checkFrames(const Map& map, const std::string& source) {
   for (size_t f = 0; f < map.footprints.size(); ++f) {
     const Footprint& fp = map.footprints[f];
     if (fp.empty()) continue;
-    const size_t side = 2 * static_cast<size_t>(std::max(fp.half, 0));
-    if (fp.dilated || !(fp.cell > 0.0f) || !std::isfinite(fp.cell) || fp.half <= 0 || fp.half > kMaxFootprintHalf ||
-        fp.bits.size() != (side * side + 63) / 64) {
+    if (fp.dilated || !isMapFootprintGrid(fp.cell, fp.half) || fp.bits.size() != Footprint::words(fp.half)) {
       invalid("the footprint of frame '" + map.names[f] + "' is not a footprint grid (dilated, or its cell, size "
               "or bits do not agree)");
     }

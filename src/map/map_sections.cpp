@@ -85,11 +85,8 @@ void readFootprints(Reader& r, Parts& parts) {
     const float cell = r.get<float>();
     const int32_t half = r.get<int32_t>();
     if (half != 0) {
-      if (half < 0 || half > kMaxFootprintHalf || !(cell > 0.0f) || !std::isfinite(cell)) {
-        r.fail("a footprint grid of " + std::to_string(half) + " half-cells");
-      }
-      const uint64_t side = 2 * static_cast<uint64_t>(half);
-      const uint64_t words = (side * side + 63) / 64;
+      if (!isMapFootprintGrid(cell, half)) r.fail("a footprint grid of " + std::to_string(half) + " half-cells");
+      const uint64_t words = Footprint::words(half);
       if (words > r.remaining() / sizeof(uint64_t)) r.fail("a footprint does not fit in the section");
       fp.cell = cell;
       fp.half = half;

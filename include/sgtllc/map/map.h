@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,12 @@ struct Map {
 
 /// Largest Footprint::half a map accepts: a grid of 2·4096 cells a side (8 MB), far above the 80 of the defaults.
 constexpr int kMaxFootprintHalf = 4096;
+
+/// Whether a footprint of cell side @p cell and @p half half-cells is a grid a map may hold (checked on reading
+/// and before writing): a finite positive cell, 1 ≤ half ≤ kMaxFootprintHalf.
+inline bool isMapFootprintGrid(float cell, int half) {
+  return cell > 0.0f && cell <= std::numeric_limits<float>::max() && half > 0 && half <= kMaxFootprintHalf;
+}
 
 /// What went wrong with a map, so callers (and tests) can tell the cases apart; the message says it in words.
 enum class MapProblem {
