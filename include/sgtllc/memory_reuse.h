@@ -12,7 +12,8 @@ namespace sgtllc {
 /// time on a 120 k-point scan. Process-wide, so a library never does it on its own: an application calls it once
 /// at start (the command-line tool and the benchmarks do; Python offers it as sgtllc.reuse_freed_memory()). Peak
 /// memory is unchanged; freed memory up to @p keep_bytes stays with the process. Results do not change.
-/// Returns false where the C library offers no such setting (not glibc), or refuses it.
+/// Returns false where the C library offers no such setting (not glibc) or refuses it (an allocator that replaces
+/// glibc's, such as AddressSanitizer's).
 bool reuseFreedMemory(std::size_t keep_bytes = std::size_t{32} << 20);
 
 }  // namespace sgtllc
