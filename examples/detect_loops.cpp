@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
       const sgtllc::FrameResult r = detector.process(scan);
       std::cout << "frame " << r.frame << ": " << r.num_nodes << " nodes";
       if (const sgtllc::Candidate* loop = r.loop()) {
-        std::cout << ", loop with frame " << loop->frame << " (score " << loop->match.score_t
+        std::cout << ", loop with frame " << loop->frame << " (score " << loop->match.score
                   << "), T_match_query =\n"
                   << loop->match.T_match_query;
       }

@@ -47,7 +47,7 @@ void enums(py::module_& m) {
   py::enum_<NodeScore>(m, "NodeScore", "Node similarity form (association.score).")
       .value("RATIO", NodeScore::kRatio, "matched slots / valid query slots (default)")
       .value("COUNT", NodeScore::kCount, "raw count of matched slots");
-  py::enum_<ScoreFormula>(m, "ScoreFormula", "Formula of score_t (verification.score_formula).")
+  py::enum_<ScoreFormula>(m, "ScoreFormula", "Formula of score (verification.score_formula).")
       .value("PAPER", ScoreFormula::kPaper, "n_in / |LA|")
       .value("LEGACY", ScoreFormula::kLegacy, "(n_in - 1) / |LA|, the authors' code")
       .value("OVERLAP", ScoreFormula::kOverlap, "n_in / max(M, N) (default)");
@@ -141,7 +141,7 @@ void sections(py::module_& m) {
       .def_readwrite("neighbour_frames", &VerificationConfig::neighbour_frames,
                      "also verify the top-1 loop's database neighbours within this many frames; 0 = off")
       .def_readwrite("offset_decay_start", &VerificationConfig::offset_decay_start,
-                     "score_t decays linearly for an estimated offset beyond this (m)")
+                     "score decays linearly for an estimated offset beyond this (m)")
       .def_readwrite("offset_decay_end", &VerificationConfig::offset_decay_end,
                      "... to 0 at this offset (m); 0 = no decay")
       .def_readwrite("min_footprint_overlap", &VerificationConfig::min_footprint_overlap,
@@ -150,7 +150,7 @@ void sections(py::module_& m) {
       .def_readwrite("footprint_cell", &VerificationConfig::footprint_cell, "side of a footprint cell (m)")
       .def_readwrite("footprint_radius", &VerificationConfig::footprint_radius,
                      "footprints reach this far from the sensor (m)")
-      .def_readwrite("score_formula", &VerificationConfig::score_formula, "score_t formula")
+      .def_readwrite("score_formula", &VerificationConfig::score_formula, "score formula")
       .def_readwrite("max_tilt_deg", &VerificationConfig::max_tilt_deg,
                      "RANSAC skips a rotation tilting the up axis more than this (deg); 180 = no check")
       .def_readwrite("guided_matching", &VerificationConfig::guided_matching,
@@ -162,8 +162,8 @@ void sections(py::module_& m) {
                      "a loop of at most this many inliers needs weak_min_footprint; 0 = no such rule")
       .def_readwrite("weak_min_footprint", &VerificationConfig::weak_min_footprint,
                      "footprint share a loop of few inliers, or of the consistency path, needs")
-      .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score_t = score_c, pose from all pairs")
-      .def_readwrite("sigma_4", &VerificationConfig::sigma_4, "σ_4: a loop iff the best score_t > σ_4")
+      .def_readwrite("use_ransac", &VerificationConfig::use_ransac, "false: score = score_c, pose from all pairs")
+      .def_readwrite("sigma_4", &VerificationConfig::sigma_4, "σ_4: a loop iff the best score > σ_4")
       .def_readwrite("seed", &VerificationConfig::seed, "RANSAC random seed");
 }
 

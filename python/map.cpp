@@ -89,8 +89,8 @@ void bindMap(py::module_& m) {
   py::class_<map::Relocalization>(m, "Relocalization", "Where a query frame is in a map.")
       .def_readonly("search", &map::Relocalization::search, "the candidates and their verification (FrameResult)")
       .def_readonly("map_frame", &map::Relocalization::map_frame, "best verified map frame, or -1")
-      .def_readonly("localized", &map::Relocalization::localized, "the best candidate's score_t > sigma_4, or tracked")
-      .def_readonly("score", &map::Relocalization::score, "score_t of the best candidate (0 if none)")
+      .def_readonly("localized", &map::Relocalization::localized, "the best candidate's score > sigma_4, or tracked")
+      .def_readonly("score", &map::Relocalization::score, "score of the best candidate (0 if none)")
       .def_readonly("tracked", &map::Relocalization::tracked,
                     "accepted by a RelocalizationTracker's agreement with the track, not by sigma_4")
       .def_readonly("weak_rotation", &map::Relocalization::weak_rotation,

@@ -77,8 +77,9 @@ void bindResults(py::module_& m) {
       .def_readonly("associations", &MatchResult::associations, "LA as NodeMatch objects, in query-node order, then the pairs guided matching added (NodeMatch.guided)")
       .def_readonly("inliers", &MatchResult::inliers, "indices into associations of the inliers (RANSAC's, or guided matching's when more)")
       .def_readonly("score_c", &MatchResult::score_c, "|LA| / M")
-      .def_readonly("score_t", &MatchResult::score_t, "loop score; 0 unless rejection is NONE")
-      .def_readonly("rejection", &MatchResult::rejection, "why score_t is 0, or NONE")
+      .def_readonly("score", &MatchResult::score, "loop score; 0 unless rejection is NONE")
+      .def_readonly("score_t", &MatchResult::score, "the old name of score, kept one release")
+      .def_readonly("rejection", &MatchResult::rejection, "why score is 0, or NONE")
       .def_readonly("T_match_query", &MatchResult::T_match_query, "(4, 4): p_match = T_match_query @ p_query")
       .def_readonly("footprint", &MatchResult::footprint, "the footprint check under the verified pose")
       .def_readonly("by_consistency", &MatchResult::by_consistency,
@@ -102,16 +103,18 @@ void bindResults(py::module_& m) {
       .def_readonly("extraction", &FrameResult::extraction, "point bookkeeping (zeros when nodes were given)")
       .def_readonly("search", &FrameResult::search, "whether the database was searched, or why not")
       .def_readonly("candidates", &FrameResult::candidates, "retrieved candidates in ascending frame index")
-      .def_readonly("best", &FrameResult::best, "index into candidates of the highest score_t, or -1")
-      .def_readonly("is_loop", &FrameResult::is_loop, "candidates[best].match.score_t > σ_4")
+      .def_readonly("best", &FrameResult::best, "index into candidates of the highest score, or -1")
+      .def_readonly("is_loop", &FrameResult::is_loop, "candidates[best].match.score > σ_4")
       .def_readonly("lateral", &FrameResult::lateral, "candidates[best] is estimated >= lateral_distance away")
       .def_readonly("timing", &FrameResult::timing, "stage times of this frame")
       .def_property_readonly("loop", &FrameResult::loop, py::return_value_policy::reference_internal,
                              "the loop-closing Candidate, or None")
       .def_property_readonly("match_frame", [](const FrameResult& r) { return best(r) ? best(r)->frame : -1; },
                              "frame index of the best candidate, or -1")
-      .def_property_readonly("score_t", [](const FrameResult& r) { return best(r) ? best(r)->match.score_t : 0.0; },
-                             "score_t of the best candidate (0 without one)")
+      .def_property_readonly("score", [](const FrameResult& r) { return best(r) ? best(r)->match.score : 0.0; },
+                             "score of the best candidate (0 without one)")
+      .def_property_readonly("score_t", [](const FrameResult& r) { return best(r) ? best(r)->match.score : 0.0; },
+                             "the old name of score, kept one release")
       .def_property_readonly("score_c", [](const FrameResult& r) { return best(r) ? best(r)->match.score_c : 0.0; },
                              "score_c of the best candidate (0 without one)")
       .def_property_readonly("T_match_query", [](const FrameResult& r) {
@@ -120,7 +123,7 @@ void bindResults(py::module_& m) {
 
   py::class_<PairResult>(m, "PairResult", "Result of comparing two frames directly.")
       .def_readonly("match", &PairResult::match, "MatchResult (query -> match)")
-      .def_readonly("is_loop", &PairResult::is_loop, "score_t > σ_4")
+      .def_readonly("is_loop", &PairResult::is_loop, "score > σ_4")
       .def_readonly("extraction_query", &PairResult::extraction_query, "point bookkeeping of the query scan")
       .def_readonly("extraction_match", &PairResult::extraction_match, "point bookkeeping of the match scan")
       .def_readonly("timing", &PairResult::timing, "both frames' extraction and description; verification")
@@ -129,7 +132,9 @@ void bindResults(py::module_& m) {
                              "(centres (M, 3) float64, classes (M,) int32) that NodeMatch.query indexes")
       .def_property_readonly("match_nodes", [](const PairResult& r) { return nodesToArrays(r.match_nodes); },
                              "(centres (N, 3) float64, classes (N,) int32) that NodeMatch.match indexes")
-      .def_property_readonly("score_t", [](const PairResult& r) { return r.match.score_t; }, "match.score_t")
+      .def_property_readonly("score", [](const PairResult& r) { return r.match.score; }, "match.score")
+      .def_property_readonly("score_t", [](const PairResult& r) { return r.match.score; },
+                             "the old name of score, kept one release")
       .def_property_readonly("score_c", [](const PairResult& r) { return r.match.score_c; }, "match.score_c")
       .def_property_readonly("rejection", [](const PairResult& r) { return r.match.rejection; }, "match.rejection")
       .def_property_readonly("T_match_query", [](const PairResult& r) { return matrixToArray(r.match.T_match_query); },

@@ -260,7 +260,8 @@ class MatchResult:
     associations: list[NodeMatch]
     inliers: list[int]
     score_c: float
-    score_t: float
+    score: float  # the loop score
+    score_t: float  # the old name of score, kept one release
     rejection: Rejection
     T_match_query: np.ndarray  # (4, 4) float64, read-only view
     association_pairs: np.ndarray  # (K, 2) int32
@@ -297,7 +298,8 @@ class FrameResult:
     timing: StageTimes
     loop: Optional[Candidate]
     match_frame: int
-    score_t: float
+    score: float
+    score_t: float  # the old name of score, kept one release
     score_c: float
     T_match_query: np.ndarray
 class PairResult:
@@ -309,7 +311,8 @@ class PairResult:
     refinement: Optional[Refinement]
     query_nodes: Nodes
     match_nodes: Nodes
-    score_t: float
+    score: float
+    score_t: float  # the old name of score, kept one release
     score_c: float
     rejection: Rejection
     T_match_query: np.ndarray

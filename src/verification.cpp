@@ -89,27 +89,27 @@ void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, c
   const double needed = weak ? std::max(vc.min_footprint_overlap, vc.weak_min_footprint) : vc.min_footprint_overlap;
   if (result->footprint.compared < kMinFootprintCells || result->footprint.share >= needed) return;
   result->rejection = Rejection::kFootprint;
-  result->score_t = 0.0;
+  result->score = 0.0;
   result->T_match_query = Eigen::Matrix4d::Identity();
 }
 
-/// score_t of a pose-verified result under the configured formula, scaled by the offset decay; then the footprint
+/// score of a pose-verified result under the configured formula, scaled by the offset decay; then the footprint
 /// check (algorithm §7.3, §7.7).
 void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc, int la,
                    MatchResult* result) {
   const double n_in = static_cast<double>(result->inliers.size());
   switch (vc.score_formula) {
     case ScoreFormula::kPaper:
-      result->score_t = n_in / la;
+      result->score = n_in / la;
       break;
     case ScoreFormula::kLegacy:
-      result->score_t = (n_in - 1.0) / la;
+      result->score = (n_in - 1.0) / la;
       break;
     case ScoreFormula::kOverlap:
-      result->score_t = n_in / std::max(query.numNodes(), match.numNodes());
+      result->score = n_in / std::max(query.numNodes(), match.numNodes());
       break;
   }
-  result->score_t *= offsetWeight(result->T_match_query.topRightCorner<3, 1>().norm(), vc);
+  result->score *= offsetWeight(result->T_match_query.topRightCorner<3, 1>().norm(), vc);
   checkFootprints(query, match, vc, result);
 }
 
@@ -187,7 +187,7 @@ MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame
   if (!vc.use_ransac) {
     // Table IV "w/o RANSAC": score_c is the score and every association is used for the pose.
     result.rejection = Rejection::kNone;
-    result.score_t = result.score_c;
+    result.score = result.score_c;
     for (int k = 0; k < la; ++k) result.inliers.push_back(k);
     result.T_match_query = fitRigid(source, target);
     return result;

@@ -97,7 +97,7 @@ TEST(WithoutRansac, ScoreIsScoreCAndEveryAssociationFitsThePose) {
   config.association.sigma_2 = 0.3;  // the paper's, as in its Table IV: the default 0.2 leaves outliers to RANSAC
   const PairResult r = comparePair(test::kittiScan("004501"), test::kittiScan("000052"), config);
   ASSERT_EQ(r.match.rejection, Rejection::kNone);
-  EXPECT_DOUBLE_EQ(r.match.score_t, r.match.score_c);
+  EXPECT_DOUBLE_EQ(r.match.score, r.match.score_c);
   EXPECT_EQ(r.match.inliers.size(), r.match.associations.size());
   EXPECT_TRUE(r.is_loop);
   // Outliers pull the all-association fit away from the reference, but not far on this pair.

@@ -105,7 +105,7 @@ TEST_F(Cli, ExportedNodeFilesGiveTheSameResult) {
   EXPECT_NEAR(pcd.points[0].x(), x, 1e-5);
   EXPECT_NEAR(pcd.points[0].z(), z, 1e-5);
   EXPECT_NEAR(pcd.points[0].y(), y, 1e-5);
-  EXPECT_EQ(nlohmann::json::parse(r.out)["score_t"], nlohmann::json::parse(r.out)["score"]);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["score_t"], nlohmann::json::parse(r.out)["score"]);  // the old name, kept
   std::ifstream ply(path("out/matches.ply"));
   const std::string text(std::istreambuf_iterator<char>(ply), {});
   EXPECT_THAT(text, HasSubstr("element vertex 48\n"));  // 25 match + 23 query nodes
@@ -231,8 +231,8 @@ TEST_F(Cli, FarTranslationsPrintInFull) {
   // a loop. Either way the translation prints in full.
   const CliRun r = run("pair " + path("a.txt") + " " + path("b.txt"));
   ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_THAT(r.out, HasSubstr("loop: no   score_t 0.000"));
-  EXPECT_THAT(r.out, HasSubstr("score_t scaled by 0.000 for the estimated offset 20000.00 m"));
+  EXPECT_THAT(r.out, HasSubstr("loop: no   score 0.000"));
+  EXPECT_THAT(r.out, HasSubstr("score scaled by 0.000 for the estimated offset 20000.00 m"));
   EXPECT_THAT(r.out, HasSubstr("-20000.000000 ]"));
   std::ofstream(path("no-decay.yaml")) << "verification:\n  offset_decay_end: 0\n";
   const CliRun plain = run("pair " + path("a.txt") + " " + path("b.txt") + " --config " + path("no-decay.yaml"));

@@ -50,7 +50,7 @@ TEST_F(KittiPairs, RevisitIsALoopWithAccuratePose) {
   const PairResult r = comparePair(*s4501, *s52);
   EXPECT_TRUE(r.is_loop);
   EXPECT_EQ(r.match.rejection, Rejection::kNone);
-  EXPECT_GT(r.match.score_t, Config{}.verification.sigma_4);
+  EXPECT_GT(r.match.score, Config{}.verification.sigma_4);
   EXPECT_GE(r.match.inliers.size(), 7u);
   // Acceptance bound: 0.15 m and 1 degree against the ICP-refined reference.
   const auto err = poseError(r.match.T_match_query, test::referencePose4501To52());
@@ -63,7 +63,7 @@ TEST_F(KittiPairs, RevisitIsALoopWithAccuratePose) {
 TEST_F(KittiPairs, DistantPlacesAreNotALoop) {
   const PairResult r = comparePair(*s850, *s88);
   EXPECT_FALSE(r.is_loop);
-  EXPECT_EQ(r.match.score_t, 0.0);
+  EXPECT_EQ(r.match.score, 0.0);
   EXPECT_NE(r.match.rejection, Rejection::kNone);
   // Also across the two places the other way round, and between the loop scans and the other place.
   EXPECT_FALSE(comparePair(*s88, *s850).is_loop);
@@ -200,7 +200,7 @@ void expectIdentical(const std::vector<FrameResult>& a, const std::vector<FrameR
       const MatchResult& y = b[f].candidates[c].match;
       EXPECT_EQ(a[f].candidates[c].frame, b[f].candidates[c].frame);
       EXPECT_EQ(a[f].candidates[c].distance2, b[f].candidates[c].distance2);
-      EXPECT_EQ(x.score_t, y.score_t);
+      EXPECT_EQ(x.score, y.score);
       EXPECT_EQ(x.score_c, y.score_c);
       EXPECT_EQ(x.inliers, y.inliers);
       EXPECT_TRUE(x.T_match_query == y.T_match_query);  // bit-for-bit

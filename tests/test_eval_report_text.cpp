@@ -127,7 +127,7 @@ TEST(ReportJson, PairListWithoutPositivesIsNullAndListsScoreT) {
   PairRecord r;
   r.pair = {7, 3, false};
   r.available = true;
-  r.score_t = 0.25;
+  r.score = 0.25;
   run.pairs.push_back(r);
   const PairListMetrics m = computePairListMetrics(run, EvalOptions{});
   const Json j = pairListMetricsJson(m, run);
@@ -137,7 +137,7 @@ TEST(ReportJson, PairListWithoutPositivesIsNullAndListsScoreT) {
   EXPECT_EQ(j["null_reasons"][0], "f1_max, ep, recall_at_100_precision: no positives: no scored pair is labelled a loop");
   ASSERT_EQ(j["pair_results"].size(), 1u);
   EXPECT_EQ(j["pair_results"][0]["score"], 0.25);
-  EXPECT_EQ(j["pair_results"][0]["score_t"], 0.25);
+  EXPECT_EQ(j["pair_results"][0]["score_t"], 0.25);  // the old name of "score", kept one release
   EXPECT_THAT(pairListSection(m, "pairs.txt", ""), HasSubstr("| F1max | n/a |\n| EP | n/a |"));
 }
 

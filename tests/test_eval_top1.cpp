@@ -83,7 +83,7 @@ TEST(Top1Protocol, ATop1TheDetectorReportsAsLateralIsNotClaimedAsARevisit) {
   // Reported lateral: score 0, so 0.8 T, 0.5 T, 0 F → F1max 1 at 0.5, EP 1.
   EXPECT_DOUBLE_EQ(m.top1.f1_max, 1.0);
   EXPECT_DOUBLE_EQ(m.top1.ep, 1.0);
-  // score_t alone: 0.8 T, 0.7 F, 0.5 T → at 0.5 P 2/3, R 1 → F1 0.8; EP ½ (1 + ½).
+  // score alone: 0.8 T, 0.7 F, 0.5 T → at 0.5 P 2/3, R 1 → F1 0.8; EP ½ (1 + ½).
   EXPECT_DOUBLE_EQ(m.top1_score_only.f1_max, 0.8);
   EXPECT_DOUBLE_EQ(m.top1_score_only.ep, 0.75);
 }
@@ -123,7 +123,7 @@ TEST(PairListProtocol, StoredNodesScoreAsTheScansDo) {
   EXPECT_EQ(b.unavailable, 1);
   for (size_t k = 0; k < 4; ++k) {
     EXPECT_EQ(a.pairs[k].available, b.pairs[k].available);
-    EXPECT_EQ(a.pairs[k].score_t, b.pairs[k].score_t);
+    EXPECT_EQ(a.pairs[k].score, b.pairs[k].score);
     EXPECT_EQ(a.pairs[k].is_loop, b.pairs[k].is_loop);
   }
   EXPECT_TRUE(b.pairs[0].is_loop);
@@ -141,7 +141,7 @@ TEST(PairListProtocol, PositivesScoredZeroAreCounted) {
     PairRecord r;
     r.pair = label;
     r.available = available;
-    r.score_t = score;
+    r.score = score;
     r.is_loop = score > 0.3;
     run.pairs.push_back(r);
   };

@@ -141,14 +141,14 @@ TEST(Footprint, AVerifiedPoseThatTheStructureContradictsIsRejected) {
                   computeFootprint(test::kittiScan("000850"), labels, config.verification));
   EXPECT_EQ(contradicted.match.rejection, Rejection::kFootprint) << contradicted.match.footprint.share << " of " << contradicted.match.footprint.compared;
   EXPECT_FALSE(contradicted.is_loop);
-  EXPECT_EQ(contradicted.match.score_t, 0.0);
+  EXPECT_EQ(contradicted.match.score, 0.0);
   EXPECT_LT(contradicted.match.footprint.share, config.verification.min_footprint_overlap);
   EXPECT_STREQ(rejectionName(contradicted.match.rejection), "footprint_mismatch");
   // Without footprints (node input) there is nothing to check: the node-level result stands.
   const PairResult nodes_only = comparePair(extractor.extract(q).nodes, extractor.extract(m).nodes, config);
   EXPECT_TRUE(nodes_only.is_loop);
   EXPECT_EQ(nodes_only.match.footprint.compared, 0);
-  EXPECT_EQ(nodes_only.match.score_t, loop.match.score_t);
+  EXPECT_EQ(nodes_only.match.score, loop.match.score);
 }
 
 TEST(Footprint, WeakEvidenceNeedsTheHigherShare) {
@@ -172,7 +172,7 @@ TEST(Footprint, WeakEvidenceNeedsTheHigherShare) {
   config.verification.weak_min_footprint = 0.97;
   const PairResult strong = comparePair(q, m, config);
   EXPECT_TRUE(strong.is_loop);
-  EXPECT_EQ(strong.match.score_t, base.match.score_t);
+  EXPECT_EQ(strong.match.score, base.match.score);
 }
 
 }  // namespace

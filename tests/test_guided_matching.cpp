@@ -178,8 +178,8 @@ TEST(GuidedMatching, RealRevisitFromGeometricLabelsBecomesALoop) {
   const MatchResult guided = matchFrames(query, match, config);
   ASSERT_EQ(plain.rejection, Rejection::kNone);
   ASSERT_EQ(guided.rejection, Rejection::kNone);
-  EXPECT_FALSE(isLoop(plain, config.verification)) << plain.score_t;
-  EXPECT_TRUE(isLoop(guided, config.verification)) << guided.score_t;
+  EXPECT_FALSE(isLoop(plain, config.verification)) << plain.score;
+  EXPECT_TRUE(isLoop(guided, config.verification)) << guided.score;
   EXPECT_GT(guided.inliers.size(), plain.inliers.size());
   EXPECT_EQ(guided.score_c, plain.score_c);  // LA and its gate are untouched
   int added = 0;

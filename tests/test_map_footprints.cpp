@@ -105,7 +105,7 @@ TEST_F(MapFootprints, AResumedDetectorChecksAsTheOneThatSavedTheMap) {
   for (size_t c = 0; c < a.candidates.size(); ++c) {
     EXPECT_EQ(a.candidates[c].match.footprint.compared, b.candidates[c].match.footprint.compared) << c;
     EXPECT_EQ(a.candidates[c].match.footprint.share, b.candidates[c].match.footprint.share) << c;
-    EXPECT_EQ(a.candidates[c].match.score_t, b.candidates[c].match.score_t) << c;
+    EXPECT_EQ(a.candidates[c].match.score, b.candidates[c].match.score) << c;
   }
   EXPECT_EQ(resumed.footprints().size(), 5u);
   EXPECT_THROW(LoopDetector(config_, std::move(again.database), std::vector<Footprint>(2)), Error);

@@ -68,7 +68,7 @@ void expectSameResult(const FrameResult& a, const FrameResult& b) {
   for (size_t c = 0; c < a.candidates.size(); ++c) {
     EXPECT_EQ(a.candidates[c].frame, b.candidates[c].frame);
     EXPECT_EQ(a.candidates[c].distance2, b.candidates[c].distance2);
-    EXPECT_EQ(a.candidates[c].match.score_t, b.candidates[c].match.score_t);
+    EXPECT_EQ(a.candidates[c].match.score, b.candidates[c].match.score);
     EXPECT_EQ(a.candidates[c].match.T_match_query, b.candidates[c].match.T_match_query);
   }
 }

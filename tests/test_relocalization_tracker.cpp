@@ -34,12 +34,12 @@ map::RelocalizerOptions handBuilt() {
   return options;
 }
 
-/// A verified candidate: map frame @p frame, score_t @p score, the query @p dx m ahead of the frame (its x axis).
+/// A verified candidate: map frame @p frame, score @p score, the query @p dx m ahead of the frame (its x axis).
 Candidate candidate(int frame, double score, double dx = 0.0, Rejection rejection = Rejection::kNone) {
   Candidate c;
   c.frame = frame;
   c.match.rejection = rejection;
-  c.match.score_t = score;
+  c.match.score = score;
   c.match.T_match_query = Eigen::Matrix4d::Identity();
   c.match.T_match_query(0, 3) = dx;
   return c;
@@ -53,11 +53,11 @@ map::Relocalization answer(const map::Relocalizer& r, std::vector<Candidate> can
   for (size_t c = 0; c < search.candidates.size(); ++c) {
     const MatchResult& m = search.candidates[c].match;
     if (m.rejection != Rejection::kNone) continue;
-    if (search.best < 0 || m.score_t > search.candidates[static_cast<size_t>(search.best)].match.score_t) {
+    if (search.best < 0 || m.score > search.candidates[static_cast<size_t>(search.best)].match.score) {
       search.best = static_cast<int>(c);
     }
   }
-  search.is_loop = search.best >= 0 && search.candidates[static_cast<size_t>(search.best)].match.score_t > 0.3;
+  search.is_loop = search.best >= 0 && search.candidates[static_cast<size_t>(search.best)].match.score > 0.3;
   const int best = search.best;
   return r.answerWith(std::move(search), best);
 }

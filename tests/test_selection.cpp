@@ -10,7 +10,7 @@ namespace {
 MatchResult verified(double score, double tx, double ty = 0.0) {
   MatchResult m;
   m.rejection = Rejection::kNone;
-  m.score_t = score;
+  m.score = score;
   m.T_match_query(0, 3) = tx;
   m.T_match_query(1, 3) = ty;
   return m;

@@ -60,7 +60,7 @@ TEST_F(MatchFrames, SelfMatchUnderRigidMotion) {
                                                [](const sgtllc::NodeMatch& a) { return !a.guided; }));
   EXPECT_GE(la, 7);
   EXPECT_DOUBLE_EQ(result.score_c, static_cast<double>(la) / query.numNodes());
-  EXPECT_DOUBLE_EQ(result.score_t, static_cast<double>(result.inliers.size()) / query.numNodes());
+  EXPECT_DOUBLE_EQ(result.score, static_cast<double>(result.inliers.size()) / query.numNodes());
   // Every inlier is a node matched to its own moved copy.
   for (int k : result.inliers) {
     EXPECT_EQ(result.associations[k].query, result.associations[k].match);
@@ -80,12 +80,12 @@ TEST_F(MatchFrames, ScoreFormulas) {
   const auto overlap = sgtllc::matchFrames(query, match, cfg);
   ASSERT_EQ(overlap.rejection, sgtllc::Rejection::kNone);
   const double n_in = static_cast<double>(overlap.inliers.size());
-  EXPECT_DOUBLE_EQ(overlap.score_t, n_in / match.numNodes());
+  EXPECT_DOUBLE_EQ(overlap.score, n_in / match.numNodes());
   cfg.verification.score_formula = sgtllc::ScoreFormula::kPaper;
   const auto paper = sgtllc::matchFrames(query, match, cfg);
   ASSERT_EQ(paper.inliers.size(), overlap.inliers.size());
-  EXPECT_DOUBLE_EQ(paper.score_t, n_in / static_cast<double>(paper.associations.size()));
-  EXPECT_GT(paper.score_t, overlap.score_t);
+  EXPECT_DOUBLE_EQ(paper.score, n_in / static_cast<double>(paper.associations.size()));
+  EXPECT_GT(paper.score, overlap.score);
 }
 
 TEST_F(MatchFrames, LegacyScoreFormula) {
@@ -94,7 +94,7 @@ TEST_F(MatchFrames, LegacyScoreFormula) {
   const auto result = sgtllc::matchFrames(describe(nodes_), describe(moved_), cfg);
   ASSERT_EQ(result.rejection, sgtllc::Rejection::kNone);
   const double la = static_cast<double>(result.associations.size());
-  EXPECT_DOUBLE_EQ(result.score_t, (static_cast<double>(result.inliers.size()) - 1.0) / la);
+  EXPECT_DOUBLE_EQ(result.score, (static_cast<double>(result.inliers.size()) - 1.0) / la);
 }
 
 TEST_F(MatchFrames, Gates) {
@@ -105,7 +105,7 @@ TEST_F(MatchFrames, Gates) {
   const int la = static_cast<int>(base.associations.size());
   const auto expectRejected = [](const sgtllc::MatchResult& r, sgtllc::Rejection why) {
     EXPECT_EQ(r.rejection, why);
-    EXPECT_EQ(r.score_t, 0.0);
+    EXPECT_EQ(r.score, 0.0);
     EXPECT_TRUE(r.inliers.empty());
     EXPECT_EQ(r.T_match_query, Eigen::Matrix4d::Identity());
   };
@@ -150,7 +150,7 @@ TEST(OffsetWeight, LinearBetweenStartAndEnd) {
 }
 
 TEST_F(MatchFrames, OffsetDecayScalesTheScoreNotThePose) {
-  // The same nodes moved 15 m and 25 m: every node still matches its copy, the pose is right, and score_t is
+  // The same nodes moved 15 m and 25 m: every node still matches its copy, the pose is right, and score is
   // n_in / N times the weight (1 − (15 − 10) / 10 = 0.5; 0 beyond 20 m).
   const DescribedFrame query = describe(nodes_);
   for (const double offset : {15.0, 25.0}) {
@@ -164,8 +164,8 @@ TEST_F(MatchFrames, OffsetDecayScalesTheScoreNotThePose) {
     const auto plain = sgtllc::matchFrames(query, match, cfg);
     ASSERT_EQ(plain.rejection, sgtllc::Rejection::kNone);
     ASSERT_EQ(decayed.rejection, sgtllc::Rejection::kNone);
-    EXPECT_DOUBLE_EQ(plain.score_t, static_cast<double>(plain.inliers.size()) / match.numNodes());
-    EXPECT_NEAR(decayed.score_t, plain.score_t * (offset < 20.0 ? 0.5 : 0.0), 1e-9);  // the pose's offset, 1e-12 off
+    EXPECT_DOUBLE_EQ(plain.score, static_cast<double>(plain.inliers.size()) / match.numNodes());
+    EXPECT_NEAR(decayed.score, plain.score * (offset < 20.0 ? 0.5 : 0.0), 1e-9);  // the pose's offset, 1e-12 off
     EXPECT_EQ(decayed.inliers, plain.inliers);
     EXPECT_LT((decayed.T_match_query - T).cwiseAbs().maxCoeff(), 1e-6);
   }

@@ -260,7 +260,7 @@ void runEval(const EvalCliOptions& o) {
               << summaryLine("F1max", m.top1.f1_max, m.top1.defined()) << ", "
               << summaryLine("EP", m.top1.ep, m.top1.defined()) << "; 3-20 m left out: "
               << summaryLine("F1max", m.top1_no_lateral.f1_max, m.top1_no_lateral.defined()) << ", "
-              << summaryLine("EP", m.top1_no_lateral.ep, m.top1_no_lateral.defined()) << "; score_t alone: "
+              << summaryLine("EP", m.top1_no_lateral.ep, m.top1_no_lateral.defined()) << "; score alone: "
               << summaryLine("F1max", m.top1_score_only.f1_max, m.top1_score_only.defined()) << "\nloops detected " << m.loops_detected << " (true "
               << m.loops_true << ", false " << m.loops_false << ", 3-20 m " << m.loops_lateral << "; reported lateral "
               << m.loops_reported_lateral

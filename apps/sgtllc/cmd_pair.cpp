@@ -102,7 +102,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   const MatchResult& m = r.match;
   std::cout << "query  " << o.query << "  (" << inputSummary(q) << ")\n"
             << "match  " << o.match << "  (" << inputSummary(mt) << ")\n";
-  std::cout << "loop: " << (r.is_loop ? "YES" : "no") << "   score_t " << fixed(m.score_t, 3)
+  std::cout << "loop: " << (r.is_loop ? "YES" : "no") << "   score " << fixed(m.score, 3)
             << (r.is_loop ? " > " : " <= ") << "sigma_4 " << config.verification.sigma_4 << "   score_c "
             << fixed(m.score_c, 3) << "\n";
   const size_t guided = numGuided(m);
@@ -114,8 +114,8 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
   const double offset = m.T_match_query.topRightCorner<3, 1>().norm();
   const double weight = offsetWeight(offset, config.verification);
   if (m.rejection == Rejection::kNone && weight < 1.0) {
-    // Else a pose 25 m away with 16 inliers would print score_t 0 with no reason (algorithm §7, offset decay).
-    std::cout << "score_t scaled by " << fixed(weight, 3) << " for the estimated offset " << fixed(offset, 2)
+    // Else a pose 25 m away with 16 inliers would print score 0 with no reason (algorithm §7, offset decay).
+    std::cout << "score scaled by " << fixed(weight, 3) << " for the estimated offset " << fixed(offset, 2)
               << " m (verification.offset_decay_start / end " << config.verification.offset_decay_start << " / "
               << config.verification.offset_decay_end << " m)\n";
   }
@@ -183,8 +183,8 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
   const Json out = {{"query", o.query},
                               {"match", o.match},
                               {"loop", r.is_loop},
-                              {"score", m.score_t},
-                              {"score_t", m.score_t},
+                              {"score", m.score},
+                              {"score_t", m.score},
                               {"score_c", m.score_c},
                               {"rejection", rejectionName(m.rejection)},
                               {"offset_weight", offsetWeight(m.T_match_query.topRightCorner<3, 1>().norm(),

@@ -125,7 +125,7 @@ void runSequence(const RunOptions& o) {
     if (const Candidate* c = r.loop()) {
       const ClosingLoop& edge =
           edges.emplace_back(detectedLoop(index, *c, detector.database(), source, config.backend.loops));
-      Loop& l = loops.emplace_back(loopRecord(edge, c->match.score_t, c->match.score_c));
+      Loop& l = loops.emplace_back(loopRecord(edge, c->match.score, c->match.score_c));
       if (!o.json && !o.quiet) {
         progress.clear();
         const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();

@@ -24,7 +24,7 @@ std::optional<map::TrackingOptions> trackingOption(bool track) {
 
 void addTrackOption(CLI::App* cmd, bool* track) {
   cmd->add_flag("--track", *track,
-                "the frames are one stream: a weaker verified answer (score_t > 0.2) is accepted when it lies within "
+                "the frames are one stream: a weaker verified answer (score > 0.2) is accepted when it lies within "
                 "3 m + 2 m per frame of the last accepted one, within 10 frames (docs/relocalization.md)");
 }
 

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
       return sgtllc::io::readLabeledScan(bin, sgtllc::io::defaultLabelPath(bin));
     };
     const sgtllc::PairResult r = sgtllc::comparePair(scan(argv[1]), scan(argv[2]));
-    std::cout << "loop " << (r.is_loop ? "YES" : "no") << ", score " << r.match.score_t << ", inliers "
+    std::cout << "loop " << (r.is_loop ? "YES" : "no") << ", score " << r.match.score << ", inliers "
               << r.match.inliers.size() << "\nT_match_query =\n" << r.match.T_match_query << "\n";
   } catch (const sgtllc::Error& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -53,11 +53,11 @@ def main():
         revisit = len(old) > 0 and np.linalg.norm(old - positions[i], axis=1).min() < args.max_distance
         has_revisit += bool(revisit)
         if result.match_frame >= 0:
-            scores.append(result.score_t)
+            scores.append(result.score)
             correct.append(np.linalg.norm(positions[result.match_frame] - positions[i]) < args.max_distance)
         if result.is_loop:
             t = result.T_match_query[:3, 3]
-            print(f"loop {seq.frame_name(i)} -> {seq.frame_name(result.match_frame)}  score {result.score_t:.3f}"
+            print(f"loop {seq.frame_name(i)} -> {seq.frame_name(result.match_frame)}  score {result.score:.3f}"
                   f"  t = ({t[0]:.2f}, {t[1]:.2f}, {t[2]:.2f}) m")
 
     if not scores or has_revisit == 0:

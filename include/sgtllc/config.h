@@ -220,7 +220,7 @@ struct AssociationConfig {
   unsigned entries = 0b111;
 };
 
-/// Formula of the loop score score_t (algorithm §7.3).
+/// Formula of the loop score (algorithm §7.3).
 enum class ScoreFormula {
   kPaper,    ///< n_in / |LA|, as the paper
   kLegacy,   ///< (n_in − 1) / |LA|, as the authors' code
@@ -230,7 +230,7 @@ enum class ScoreFormula {
 struct VerificationConfig {
   /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: the paper's 0.35 (and
   /// |LA| ≥ 7 below) gave score 0 to 4.6 % of the true loops of the simulator's pair lists, most of them in
-  /// small graphs (suburban scenes, occlusion); the overlap score_t already divides by the larger graph's size,
+  /// small graphs (suburban scenes, occlusion); the overlap score already divides by the larger graph's size,
   /// so the gates only dropped true loops. Default 0, |LA| ≥ 3 and 3 RANSAC inliers (the fewest a rigid fit
   /// needs): pair-list F1max 0.970 → 0.991 (urban11), 0.969 → 0.992 (sub7), no false loop added, see
   /// BENCHMARKS.md ("Verification gates"). The paper's values: sigma_3 0.35, min_associations 7, min_inliers 5]
@@ -253,15 +253,15 @@ struct VerificationConfig {
   /// ~0.5 ms per candidate that passes the gates; at the inlier ratios of true loops (60–80 %, algorithm §11) ~50
   /// suffice]
   double ransac_confidence = 0.999;
-  /// score_t formula (algorithm §7.3). [deviation: the first choice was the paper's n_in / |LA|. Two scans 20–25 m
+  /// score formula (algorithm §7.3). [deviation: the first choice was the paper's n_in / |LA|. Two scans 20–25 m
   /// apart share a few objects; those few associate and agree, so n_in / |LA| is high although most of either
   /// graph is unmatched, and such pairs were nearly all the false loops on simulated sequences. Dividing by the
   /// larger graph's size keeps true revisits high and pushes partial overlaps down: EP 0.72 → 0.97 on the
   /// 2,000-frame urban sequence, see BENCHMARKS.md ("Loop score")]
   ScoreFormula score_formula = ScoreFormula::kOverlap;
-  /// false = no RANSAC (Table IV "w/o RANSAC"): score_t = score_c and the pose is fitted to all associations.
+  /// false = no RANSAC (Table IV "w/o RANSAC"): score = score_c and the pose is fitted to all associations.
   bool use_ransac = true;
-  /// σ_4: a loop iff the best score_t > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) [0, 1] (every score_t
+  /// σ_4: a loop iff the best score > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) [0, 1] (every score
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
   /// Largest tilt (°) between the up axes of a loop's two scans: RANSAC skips a hypothesis whose rotation turns z
@@ -293,7 +293,7 @@ struct VerificationConfig {
   /// path the check must also have run: both frames from scans, min_footprint_overlap > 0) [0, 1].
   /// [deviation: BENCHMARKS.md "Consistency path", "Weak evidence"]
   double weak_min_footprint = 0.65;
-  /// Top-1 choice (selection.h): 0 = the highest score_t, as the paper (algorithm §7.4); m > 0 = among the verified
+  /// Top-1 choice (selection.h): 0 = the highest score, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
   /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: tuned on the urban11 and sub7
   /// sequences, see BENCHMARKS.md ("Top-1 choice")]
@@ -309,15 +309,15 @@ struct VerificationConfig {
   /// the one nearest the query often scores within the margin yet ranks outside the K retrieved. 0 = off, as the
   /// paper [0, 50]. [deviation: tuned on the urban11 and sub7 sequences, see BENCHMARKS.md ("Top-1 choice")]
   int neighbour_frames = 2;
-  /// Offset decay of score_t (verification.h, offsetWeight): a verified candidate whose estimated offset
-  /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score_t is scaled down linearly to 0
+  /// Offset decay of score (verification.h, offsetWeight): a verified candidate whose estimated offset
+  /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score is scaled down linearly to 0
   /// at offset_decay_end (m) [0, 1000]. [deviation, for the pairwise EP. The highest-scoring wrong matches were
   /// pairs just over 20 m apart whose pose was right (estimated 20.0 m for 20.1 m): two passes along the same
   /// street share many objects, so the overlap score cannot tell them from a revisit, but their pose can. Tuned on
   /// the urban11 and sub7 sequences: pairwise EP 0.939 → 0.994 and 0.980 → 0.996, see BENCHMARKS.md ("Offset
   /// decay"). Matches closer than offset_decay_start, revisits and their 3–10 m neighbours, are not changed]
   double offset_decay_start = 10.0;
-  /// ... and the offset at which score_t reaches 0 (m); 0 = no decay, as the paper [0, 1000], 0 or greater than
+  /// ... and the offset at which score reaches 0 (m); 0 = no decay, as the paper [0, 1000], 0 or greater than
   /// offset_decay_start.
   double offset_decay_end = 20.0;
   /// Footprint check (footprint.h, algorithm §7.7): a verified candidate is rejected (Rejection::kFootprint) when,

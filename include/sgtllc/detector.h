@@ -63,7 +63,7 @@ struct FrameResult {
   /// (Candidate::retrieved false), in ascending frame index, each verified.
   std::vector<Candidate> candidates;
   int best = -1;                      ///< index into candidates of the chosen one (selectCandidate), or −1
-  bool is_loop = false;               ///< candidates[best].match.score_t > σ_4
+  bool is_loop = false;               ///< candidates[best].match.score > σ_4
   bool lateral = false;               ///< candidates[best] is estimated ≥ verification.lateral_distance away
   StageTimes timing;
 

@@ -1,5 +1,5 @@
 /// @file verification.h
-/// @brief Verifying one candidate frame: association, score_c gate, RANSAC, score_t and the SVD pose (algorithm §6–§7).
+/// @brief Verifying one candidate frame: association, score_c gate, RANSAC, score and the SVD pose (algorithm §6–§7).
 #pragma once
 
 #include <vector>
@@ -36,7 +36,7 @@ struct MatchResult {
   /// Indices into associations of the inliers, ascending: RANSAC's, or guided matching's pairs when it found more.
   std::vector<int> inliers;
   double score_c = 0.0;                 ///< |LA| / M, M = all query nodes, isolated ones included (algorithm §7.1)
-  double score_t = 0.0;                 ///< loop score; 0 unless rejection == kNone (algorithm §7.3)
+  double score = 0.0;                 ///< loop score; 0 unless rejection == kNone (algorithm §7.3)
   Rejection rejection = Rejection::kFewAssociations;
   /// Maps query-frame points into the match frame: p_match = T_match_query · p_query. Kabsch on all inliers
   /// (algorithm §7.5), or RANSAC's hypothesis where that refit would tilt beyond verification.max_tilt_deg; the
@@ -53,19 +53,19 @@ struct MatchResult {
 /// RANSAC parameters of the verification config.
 RansacParams ransacParams(const VerificationConfig& config);
 
-/// Weight in [0, 1] of a verified candidate's score_t for its estimated offset ‖t(T_match_query)‖ (m): 1 up to
+/// Weight in [0, 1] of a verified candidate's score for its estimated offset ‖t(T_match_query)‖ (m): 1 up to
 /// `config.offset_decay_start`, then linearly down to 0 at `config.offset_decay_end`; always 1 when that is 0.
 /// A pose that puts the query 20 m from the candidate says it is not the same place, however many objects agree.
 double offsetWeight(double offset_m, const VerificationConfig& config);
 
-/// Associates nodes, applies the score_c gate, runs RANSAC, fits the pose on its inliers and scales score_t by
+/// Associates nodes, applies the score_c gate, runs RANSAC, fits the pose on its inliers and scales score by
 /// offsetWeight of the pose's translation. When that is not a loop and verification.consistency_pairs > 0, the
 /// consistency path (algorithm §7.8) tries again, and its result is returned if it is a loop.
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config);
 
-/// The loop decision for one candidate score: score_t > σ_4 (algorithm §7.4).
+/// The loop decision for one candidate score: score > σ_4 (algorithm §7.4).
 inline bool isLoop(const MatchResult& m, const VerificationConfig& config) {
-  return m.rejection == Rejection::kNone && m.score_t > config.sigma_4;
+  return m.rejection == Rejection::kNone && m.score > config.sigma_4;
 }
 
 }  // namespace sgtllc

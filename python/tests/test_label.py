@@ -59,7 +59,7 @@ def test_revisit_from_scans_alone_equals_the_cli(cli):
     q, m = sgtllc.read_kitti_bin(str(QUERY_BIN)), sgtllc.read_kitti_bin(str(MATCH_BIN))
     r = sgtllc.compare_pair(q, sgtllc.label_scan_ids(q), m, sgtllc.label_scan_ids(m))
     assert r.is_loop and expected["loop"]
-    assert r.score_t == pytest.approx(expected["score_t"], abs=1e-12)
+    assert r.score == pytest.approx(expected["score"], abs=1e-12)
     guided = [a for a in r.match.associations if a.guided]
     assert len(guided) == expected["guided_pairs"] > 0
     assert all(a.similarity == 0.0 for a in guided)

@@ -112,8 +112,8 @@ def test_resume_equals_one_run():
     assert resumed.num_frames == 70
     for i, (c, k) in enumerate(frames[70:], start=70):
         r = resumed.process_nodes(c, k)
-        assert (r.frame, r.is_loop, r.match_frame, r.score_t) == (whole[i].frame, whole[i].is_loop,
-                                                                 whole[i].match_frame, whole[i].score_t)
+        assert (r.frame, r.is_loop, r.match_frame, r.score) == (whole[i].frame, whole[i].is_loop,
+                                                                 whole[i].match_frame, whole[i].score)
 
 
 def test_bad_maps_are_refused(tmp_path):

@@ -23,7 +23,9 @@ def test_compare_pair_equals_cli_json(cli, query, match):
     expected = cli_json(cli, "pair", q, m)
     r = sgtllc.compare_pair(*scan(q), *scan(m))
     assert r.is_loop == expected["loop"]
-    assert r.score_t == pytest.approx(expected["score"], abs=1e-12)
+    assert r.score == pytest.approx(expected["score"], abs=1e-12)
+    # score_t: the old name of score in Python and in the JSON, kept one release.
+    assert r.score_t == r.score == r.match.score_t and expected["score_t"] == expected["score"]
     assert r.score_c == pytest.approx(expected["score_c"], abs=1e-12)
     assert r.rejection.name.lower() == expected["rejection"]
     np.testing.assert_allclose(r.T_match_query, np.array(expected["T_match_query"]), rtol=0, atol=1e-6)
@@ -55,7 +57,7 @@ def test_true_loop_pose_matches_ground_truth(pair):
 def test_compare_nodes_equals_compare_pair(pair):
     r = sgtllc.compare_pair(*pair)
     n = sgtllc.compare_nodes(*r.query_nodes, *r.match_nodes)
-    assert n.score_t == r.score_t and n.is_loop == r.is_loop
+    assert n.score == r.score and n.is_loop == r.is_loop
     # Node sets have no points, so no refinement: their pose is the scans' object-level SVD pose, the seed.
     assert n.refinement is None and r.refinement is not None
     np.testing.assert_array_equal(n.T_match_query, r.refinement.T_match_query_seed)
@@ -88,7 +90,7 @@ def test_dtypes_and_layouts_give_the_same_result(pair):
     ]
     for points, labels in variants:
         r = sgtllc.compare_pair(points, labels, mp, ml)
-        assert r.score_t == base.score_t
+        assert r.score == base.score
         np.testing.assert_array_equal(r.T_match_query, base.T_match_query)
 
 
@@ -100,7 +102,7 @@ def test_nan_points_raise_unless_dropped(pair):
         sgtllc.compare_pair(bad, labels, mp, ml)
     r = sgtllc.compare_pair(bad, labels, mp, ml, drop_nonfinite=True)
     assert r.extraction_query.nonfinite_points == 1
-    assert r.score_t == sgtllc.compare_pair(qp, ql, mp, ml).score_t
+    assert r.score == sgtllc.compare_pair(qp, ql, mp, ml).score
 
 
 @pytest.mark.parametrize(
@@ -141,7 +143,7 @@ def test_bad_nodes_raise_value_error():
 def test_empty_scans_are_no_loop():
     e = np.zeros((0, 3), np.float32)
     r = sgtllc.compare_pair(e, np.zeros(0, np.uint32), e, np.zeros(0, np.uint32))
-    assert not r.is_loop and r.score_t == 0.0 and r.rejection == sgtllc.Rejection.FEW_ASSOCIATIONS
+    assert not r.is_loop and r.score == 0.0 and r.rejection == sgtllc.Rejection.FEW_ASSOCIATIONS
     np.testing.assert_array_equal(r.T_match_query, np.eye(4))
 
 
@@ -149,7 +151,7 @@ def test_config_is_used(pair):
     config = sgtllc.Config()
     config.verification.sigma_4 = 0.99
     r = sgtllc.compare_pair(*pair, config=config)
-    assert not r.is_loop and r.score_t == sgtllc.compare_pair(*pair).score_t
+    assert not r.is_loop and r.score == sgtllc.compare_pair(*pair).score
 
 
 def test_threads_share_the_module(pair):
@@ -161,7 +163,7 @@ def test_threads_share_the_module(pair):
     with ThreadPoolExecutor(4) as pool:
         results = list(pool.map(lambda _: sgtllc.compare_pair(*pair), range(4)))
     for r in results:
-        assert r.score_t == expected.score_t
+        assert r.score == expected.score
         np.testing.assert_array_equal(r.T_match_query, expected.T_match_query)
     detector = sgtllc.LoopDetector()
     qp, ql, _, _ = pair

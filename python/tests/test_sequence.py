@@ -24,7 +24,7 @@ def python_loops(sequence, config):
                                         config.backend.loops).information
             except sgtllc.Error:
                 info = None  # collinear inlier centres: `run` writes empty information columns
-            rows.append((seq.frame_name(i), seq.frame_name(c.frame), c.match.score_t, c.match.score_c,
+            rows.append((seq.frame_name(i), seq.frame_name(c.frame), c.match.score, c.match.score_c,
                          c.match.T_match_query, info))
     return rows
 
@@ -95,6 +95,6 @@ def test_process_nodes_equals_process(simulated):
     for i in range(len(seq)):
         a = points_detector.process(*seq.load(i))
         b = nodes_detector.process_nodes(*points_detector.nodes(i))
-        assert (a.is_loop, a.match_frame, a.score_t) == (b.is_loop, b.match_frame, b.score_t)
+        assert (a.is_loop, a.match_frame, a.score) == (b.is_loop, b.match_frame, b.score)
         assert [c.frame for c in a.candidates] == [c.frame for c in b.candidates]
     assert nodes_detector.num_frames == len(seq)

@@ -101,7 +101,7 @@ void scorePairs(PairListRun& run, const std::vector<DescribedFrame>& frames, con
     PairRecord& r = run.pairs[k];
     if (!r.available) return;
     const MatchResult m = matchFrames(frames[slot_of.at(r.pair.query)], frames[slot_of.at(r.pair.candidate)], config);
-    r.score_t = m.score_t;
+    r.score = m.score;
     r.score_c = m.score_c;
     r.rejection = m.rejection;
     r.is_loop = isLoop(m, config.verification);
@@ -162,9 +162,9 @@ PairListMetrics computePairListMetrics(const PairListRun& run, const EvalOptions
     ++m.n_pairs;
     if (!r.available) continue;
     ++m.n_available;
-    samples.push_back({r.score_t, r.pair.loop});
+    samples.push_back({r.score, r.pair.loop});
     m.correct += r.is_loop == r.pair.loop;
-    m.positives_scored_zero += r.pair.loop && r.score_t == 0.0;
+    m.positives_scored_zero += r.pair.loop && r.score == 0.0;
     if (r.pose_evaluated) errors.push_back(r.pose_error);
   }
   m.curve = curveMetrics(samples, options.positive_distances.at(0));

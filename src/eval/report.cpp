@@ -132,7 +132,7 @@ std::string top1Section(const SequenceMetrics& m, const EvalOptions& options) {
      << c.near << " / " << c.lateral << " / " << c.far << " / " << c.none << " |\n"
      << "| F1max / EP, a top-1 ≥ " << pos << " m counted false | " << f1Ep(m.top1)
      << " |\n| F1max / EP, lateral top-1 left out | " << f1Ep(m.top1_no_lateral)
-     << " |\n| F1max / EP, score_t alone (no lateral check) | " << f1Ep(m.top1_score_only) << " |\n\n"
+     << " |\n| F1max / EP, score alone (no lateral check) | " << f1Ep(m.top1_score_only) << " |\n\n"
      << "A top-1 the detector reports as lateral (its pose puts it ≥ verification.lateral_distance away) is not "
         "claimed as a revisit: score 0 in the first two rows.\n\n";
   return md.str();
@@ -177,7 +177,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
   for (const FrameRecord& f : run.frames) {
     const CandidateRecord* best = f.best >= 0 ? &f.candidates[static_cast<size_t>(f.best)] : nullptr;
     frames << io::csvField(f.name) << "," << f.num_nodes << "," << f.queried << "," << f.has_revisit << "," << f.is_loop << ","
-           << (best ? name(best->frame) : "") << "," << (best ? best->score_t : 0.0) << ","
+           << (best ? name(best->frame) : "") << "," << (best ? best->score : 0.0) << ","
            << (best ? best->distance : 0.0) << "," << f.timing.extraction_ms << "," << f.timing.description_ms << ","
            << f.timing.retrieval_ms << "," << f.timing.verification_ms << "," << f.db_bytes << ",";
     if (f.is_loop) frames << f.pose_error.translation_m << "," << f.pose_error.rotation_deg;
@@ -191,7 +191,7 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
            "query_nodes,candidate_nodes,footprint_share,path\n";
   for (const FrameRecord& f : run.frames) {
     for (const CandidateRecord& c : f.candidates) {
-      pairs << io::csvField(f.name) << "," << name(c.frame) << "," << c.distance << "," << c.score_t << "," << c.score_c << ","
+      pairs << io::csvField(f.name) << "," << name(c.frame) << "," << c.distance << "," << c.score << "," << c.score_c << ","
             << rejectionName(c.rejection) << "," << c.estimated_distance << "," << (c.retrieved ? 1 : 0) << ","
             << c.associations << "," << c.inliers << "," << f.num_nodes << "," << c.match_nodes << ","
             << c.footprint_share << "," << (c.by_consistency ? "consistency" : "descriptors") << "\n";
@@ -255,7 +255,7 @@ void writePairListReport(const std::string& dir, const PairListRun& run, const P
   pairs << "query,candidate,label,available,loop,score,score_c,rte_m,rre_deg\n";
   for (const PairRecord& r : run.pairs) {
     pairs << r.pair.query << "," << r.pair.candidate << "," << r.pair.loop << "," << r.available << "," << r.is_loop
-          << "," << r.score_t << "," << r.score_c << ",";
+          << "," << r.score << "," << r.score_c << ",";
     if (r.pose_evaluated) pairs << r.pose_error.translation_m << "," << r.pose_error.rotation_deg;
     else pairs << ",";
     pairs << "\n";

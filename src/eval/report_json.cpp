@@ -108,7 +108,7 @@ Json pairListMetricsJson(const PairListMetrics& m, const PairListRun& run, size_
     for (const PairRecord& r : run.pairs) {
       if (!r.available) continue;
       Json item = {{"query", r.pair.query}, {"candidate", r.pair.candidate}, {"label", r.pair.loop ? 1 : 0},
-                   {"loop", r.is_loop},     {"score", r.score_t},           {"score_t", r.score_t},
+                   {"loop", r.is_loop},     {"score", r.score},           {"score_t", r.score},
                    {"score_c", r.score_c},  {"rejection", rejectionName(r.rejection)}};
       if (r.pose_evaluated) {
         item["rte_m"] = r.pose_error.translation_m;

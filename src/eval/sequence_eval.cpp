@@ -39,7 +39,7 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
     }
     for (const Candidate& c : r.candidates) {
       const long f = numbers[static_cast<size_t>(c.frame)];
-      rec.candidates.push_back(CandidateRecord{f, c.match.score_t, c.match.score_c, truth.distance(rec.frame, f),
+      rec.candidates.push_back(CandidateRecord{f, c.match.score, c.match.score_c, truth.distance(rec.frame, f),
                                                c.distance2, c.match.rejection,
                                                c.match.T_match_query.topRightCorner<3, 1>().norm(), c.retrieved});
       CandidateRecord& added = rec.candidates.back();
@@ -98,8 +98,8 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
     for (const FrameRecord& f : run.frames) {
       for (const CandidateRecord& c : f.candidates) {
         if (!c.retrieved) continue;  // the K retrieved per query, as the paper
-        if (c.distance < d) samples.push_back({c.score_t, true});
-        else if (c.distance > options.negative_distance) samples.push_back({c.score_t, false});
+        if (c.distance < d) samples.push_back({c.score, true});
+        else if (c.distance > options.negative_distance) samples.push_back({c.score, false});
       }
     }
     out.pairwise.push_back(curveMetrics(samples, d));
@@ -126,9 +126,9 @@ SequenceMetrics computeSequenceMetrics(const SequenceRun& run, const EvalOptions
         return a.descriptor_distance2 < b.descriptor_distance2;
       });
       const CandidateRecord& c = f.best >= 0 ? f.candidates[static_cast<size_t>(f.best)] : *nearest;
-      const ScoredSample sample{f.best >= 0 && !f.lateral ? c.score_t : 0.0, c.distance < positive};
+      const ScoredSample sample{f.best >= 0 && !f.lateral ? c.score : 0.0, c.distance < positive};
       top1.push_back(sample);
-      top1_score_only.push_back({f.best >= 0 ? c.score_t : 0.0, sample.positive});
+      top1_score_only.push_back({f.best >= 0 ? c.score : 0.0, sample.positive});
       const bool lateral = !sample.positive && c.distance <= options.negative_distance;
       if (!lateral) top1_no_lateral.push_back(sample);
       ++(sample.positive ? out.top1_counts.near : lateral ? out.top1_counts.lateral : out.top1_counts.far);

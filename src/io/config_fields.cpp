@@ -353,7 +353,7 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                      "stop RANSAC once an all-inlier sample is drawn with this probability; 1 = all iterations",
                      [](Config& c) -> double& { return c.verification.ransac_confidence; }));
   f.push_back(choice<ScoreFormula>("verification.score_formula",
-                                   "score_t: n_in/|LA|, (n_in - 1)/|LA| or n_in/max(M, N)",
+                                   "score: n_in/|LA|, (n_in - 1)/|LA| or n_in/max(M, N)",
                                    [](Config& c) -> ScoreFormula& { return c.verification.score_formula; },
                                    {{"paper", ScoreFormula::kPaper},
                                     {"legacy", ScoreFormula::kLegacy},
@@ -374,10 +374,10 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
   f.push_back(number("verification.weak_min_footprint",
                      "footprint share a loop of few inliers, or of the consistency path, needs",
                      [](Config& c) -> double& { return c.verification.weak_min_footprint; }));
-  f.push_back(number("verification.sigma_4", "σ_4: loop iff best score_t > σ_4 (0.1 for MulRan/MCD)",
+  f.push_back(number("verification.sigma_4", "σ_4: loop iff best score > σ_4 (0.1 for MulRan/MCD)",
                      [](Config& c) -> double& { return c.verification.sigma_4; }));
   f.push_back(number("verification.select_margin",
-                     "top-1: the nearest (smallest translation) of the candidates within this of the best score_t; 0 = best",
+                     "top-1: the nearest (smallest translation) of the candidates within this of the best score; 0 = best",
                      [](Config& c) -> double& { return c.verification.select_margin; }));
   f.push_back(number("verification.lateral_distance",
                      "a chosen candidate estimated this far or farther (m) is reported as lateral, not a revisit",
@@ -386,7 +386,7 @@ std::vector<Field> fieldsFor(const LabelConfig& labels) {
                            "also verify the top-1 loop's database neighbours within this many frames; 0 = off",
                            [](Config& c) -> int& { return c.verification.neighbour_frames; }));
   f.push_back(number("verification.offset_decay_start",
-                     "score_t is scaled down linearly for an estimated offset beyond this (m) ...",
+                     "score is scaled down linearly for an estimated offset beyond this (m) ...",
                      [](Config& c) -> double& { return c.verification.offset_decay_start; }));
   f.push_back(number("verification.offset_decay_end", "... to 0 at this offset (m); 0 = no decay",
                      [](Config& c) -> double& { return c.verification.offset_decay_end; }));

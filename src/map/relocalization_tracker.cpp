@@ -48,12 +48,12 @@ Relocalization RelocalizationTracker::track(Relocalization answer) {
     int agreeing = -1;
     for (size_t c = 0; c < candidates.size(); ++c) {
       const MatchResult& m = candidates[c].match;
-      if (m.rejection != Rejection::kNone || !(m.score_t > options_.weak_sigma)) continue;
+      if (m.rejection != Rejection::kNone || !(m.score > options_.weak_sigma)) continue;
       if (!relocalizer_.rotationSupported(candidates[c])) continue;
       const Eigen::Matrix4d T_world_query = poses[static_cast<size_t>(candidates[c].frame)] * m.T_match_query;
       if ((T_world_query.topRightCorner<3, 1>() - *last_).norm() > reach) continue;
       // The highest score wins; ties go to the earlier candidate (candidates are in frame order).
-      if (agreeing < 0 || m.score_t > candidates[static_cast<size_t>(agreeing)].match.score_t) {
+      if (agreeing < 0 || m.score > candidates[static_cast<size_t>(agreeing)].match.score) {
         agreeing = static_cast<int>(c);
       }
     }

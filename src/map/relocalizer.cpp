@@ -126,7 +126,7 @@ Relocalization Relocalizer::answerWith(FrameResult search, int candidate) const 
   r.map_frame = chosen.frame;
   r.weak_rotation = !rotationSupported(chosen);
   r.localized = r.search.is_loop && !r.weak_rotation;
-  r.score = chosen.match.score_t;
+  r.score = chosen.match.score;
   r.T_mapframe_query = chosen.match.T_match_query;
   if (!map_.hasPoses()) return r;
   r.T_world_query = map_.poses[static_cast<size_t>(chosen.frame)] * r.T_mapframe_query;

@@ -11,7 +11,7 @@ namespace sgtllc::eval {
 
 /// One scored sample: a (query, candidate) pair, or a query's top-1 prediction.
 struct ScoredSample {
-  double score = 0.0;     ///< the method's confidence (score_t; 0 when a gate failed)
+  double score = 0.0;     ///< the method's confidence (the loop score; 0 when a gate failed)
   bool positive = false;  ///< ground truth: a true loop
 };
 

@@ -29,7 +29,7 @@ std::vector<LoopPairLabel> readPairList(const std::string& path, bool allow_empt
 struct PairRecord {
   LoopPairLabel pair;
   bool available = false;      ///< both frames are in the source
-  double score_t = 0.0;
+  double score = 0.0;
   double score_c = 0.0;
   Rejection rejection = Rejection::kFewAssociations;
   bool is_loop = false;
@@ -59,8 +59,8 @@ struct PairListMetrics {
   CurveMetrics curve;     ///< over the available pairs, labels as given
   int n_pairs = 0;
   int n_available = 0;
-  int correct = 0;        ///< available pairs whose decision (score_t > σ_4) equals the label
-  int positives_scored_zero = 0;  ///< available pairs labelled loop whose score_t is 0 (a gate or RANSAC failed)
+  int correct = 0;        ///< available pairs whose decision (score > σ_4) equals the label
+  int positives_scored_zero = 0;  ///< available pairs labelled loop whose score is 0 (a gate or RANSAC failed)
   PoseSummary poses;
 };
 

@@ -40,7 +40,7 @@ struct ReportExtra {
 /// `db_bytes_per_frame`, the distance test, `loops` (`detected`, `true`, `false`, `lateral` = 3–20 m, …), and the
 /// top-1 protocol: `top1` (its curve's `f1_max`, `ep`, …, `n_positive`, `n_negative`, and where the top-1
 /// candidates lie: `near` < 3 m, `lateral` 3–20 m, `far` > 20 m, `no_candidate`) and `top1_no_lateral` (the same
-/// curve with the lateral top-1 left out) and `top1_score_only` (score_t alone, no lateral check); `loops` also
+/// curve with the lateral top-1 left out) and `top1_score_only` (score alone, no lateral check); `loops` also
 /// has `reported_lateral` (loops the detector itself reported as lateral).
 Json sequenceMetricsJson(const SequenceMetrics& m);
 /// Pair-list metrics (`f1_max`, `ep`, `recall_at_100_precision`, counts, pose summary) and, for lists of at most

@@ -36,7 +36,7 @@ struct EvalOptions {
 /// One retrieved candidate of a query, with its ground truth.
 struct CandidateRecord {
   long frame = -1;             ///< frame number of the candidate
-  double score_t = 0.0;        ///< final score (0 when a gate failed)
+  double score = 0.0;        ///< final score (0 when a gate failed)
   double score_c = 0.0;
   double distance = 0.0;       ///< ground-truth distance to the query (m)
   double descriptor_distance2 = 0.0;  ///< squared L2 distance of the global descriptors
@@ -58,7 +58,7 @@ struct FrameRecord {
   bool queried = false;       ///< the database had eligible frames (past the exclusion gap and warm-up)
   bool has_revisit = false;   ///< an eligible frame lies within the main positive distance
   std::vector<CandidateRecord> candidates;  ///< ascending frame
-  int best = -1;              ///< index into candidates of the highest score_t, or −1
+  int best = -1;              ///< index into candidates of the highest score, or −1
   bool is_loop = false;       ///< the detector declared a loop with candidates[best]
   bool lateral = false;       ///< the detector reported candidates[best] as lateral (FrameResult::lateral)
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();  ///< the loop's pose (if is_loop)
@@ -108,13 +108,13 @@ struct Top1Counts {
 
 struct SequenceMetrics {
   std::vector<CurveMetrics> pairwise;  ///< algorithm §9 pairwise protocol, one per positive distance ([0] is the main)
-  /// One sample per query: its chosen candidate (FrameRecord::best) with its score_t, or score 0 if the detector
+  /// One sample per query: its chosen candidate (FrameRecord::best) with its score, or score 0 if the detector
   /// reported it as lateral (its own pose puts it ≥ verification.lateral_distance away: not claimed as the
   /// revisit); if none passed the gates, its nearest global descriptor with score 0 (Scan Context / SSC
   /// protocol). A top-1 at or beyond the main positive distance is a false positive; recall counts against
   /// n_revisit_queries.
   CurveMetrics top1;
-  /// The same with score_t for every chosen candidate, lateral or not (score alone, as peers without a pose).
+  /// The same with score for every chosen candidate, lateral or not (score alone, as peers without a pose).
   CurveMetrics top1_score_only;
   /// The same with the lateral top-1 samples (3–20 m) left out, as the pairwise protocol leaves out its 3–20 m
   /// pairs; the recall denominator is still n_revisit_queries.

@@ -3,7 +3,7 @@
 ///
 /// One header line, then one loop per line:
 /// `query,match,score,score_c,r11,r12,r13,tx,r21,r22,r23,ty,r31,r32,r33,tz`
-/// where query and match are frame names (file stems such as `004501`), score is the verification score s_t,
+/// where query and match are frame names (file stems such as `004501`), score is the loop score,
 /// score_c the consistency score, and the twelve numbers the row-major 3×4 T_match_query (maps points of the query
 /// scan into the match scan's LiDAR frame), written `%.6f`. A frame name holding a comma, a double quote, CR or LF
 /// is quoted as RFC 4180 says (csv.h); the reader accepts that quoting, newlines inside quotes included.
@@ -30,7 +30,7 @@ struct LoopRecord {
   std::string match;  ///< frame name of the matched earlier frame
   int query_index = -1;  ///< position of the query in the sequence (set by readLoopsCsv; unused by the writer)
   int match_index = -1;  ///< position of the match in the sequence (set by readLoopsCsv; unused by the writer)
-  double score = 0.0;    ///< verification score s_t
+  double score = 0.0;    ///< the loop score
   double score_c = 0.0;  ///< consistency score
   Eigen::Matrix4d T_match_query = Eigen::Matrix4d::Identity();
   /// Information of the loop edge over (δt, δθ), if known (written and read with the information columns).

@@ -14,7 +14,7 @@ namespace sgtllc::map {
 
 /// When a weaker answer may be accepted. The defaults were chosen on the tuning world of docs/relocalization.md.
 struct TrackingOptions {
-  /// A verified candidate scoring score_t > this (but not above verification.sigma_4) is accepted when its estimated
+  /// A verified candidate scoring score > this (but not above verification.sigma_4) is accepted when its estimated
   /// position agrees with the track [0, 1].
   double weak_sigma = 0.2;
   /// Agreement: the candidate's estimated position lies within gate_m + max_speed_m_per_frame · (frames since the

@@ -25,10 +25,10 @@ struct Relocalization {
   /// the query's estimated position T_world_query (the verified candidate, search.candidates[search.best], may be
   /// a neighbour of the place); without, the verified candidate itself.
   int map_frame = -1;
-  /// The best candidate is a loop (score_t > verification.sigma_4), or a RelocalizationTracker accepted the answer
+  /// The best candidate is a loop (score > verification.sigma_4), or a RelocalizationTracker accepted the answer
   /// (tracked).
   bool localized = false;
-  double score = 0.0;      ///< score_t of the best candidate (0 if none)
+  double score = 0.0;      ///< score of the best candidate (0 if none)
   /// Maps query points into map frame @p map_frame (identity if none): with map poses,
   /// T_world_mapframe⁻¹ · T_world_query.
   Eigen::Matrix4d T_mapframe_query = Eigen::Matrix4d::Identity();
