@@ -81,6 +81,39 @@ struct CliqueSearch {
   }
 };
 
+/// The distances between the distinct points of the first @p n entries of @p points, each named by its entry of
+/// @p ids (one point per id): computed once per pair of points instead of once per pair of entries, where each
+/// point is an entry of up to consistency_pairs hypotheses. The same values, bit for bit, as the entries' own
+/// differences: (p − q).norm() and (q − p).norm() square the same numbers.
+class PointDistances {
+ public:
+  PointDistances(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& ids, int n) : slot_(n) {
+    std::vector<int> distinct(ids.begin(), ids.begin() + n);
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    m_ = static_cast<int>(distinct.size());
+    std::vector<int> first(static_cast<size_t>(m_), -1);  // an entry holding each point
+    for (int a = 0; a < n; ++a) {
+      slot_[a] = static_cast<int>(std::lower_bound(distinct.begin(), distinct.end(), ids[a]) - distinct.begin());
+      if (first[slot_[a]] < 0) first[slot_[a]] = a;
+    }
+    d_.assign(static_cast<size_t>(m_) * static_cast<size_t>(m_), 0.0);
+    for (int s = 0; s < m_; ++s) {
+      for (int t = s + 1; t < m_; ++t) {
+        const double d = (points[first[s]] - points[first[t]]).norm();
+        d_[static_cast<size_t>(s) * m_ + t] = d;
+        d_[static_cast<size_t>(t) * m_ + s] = d;
+      }
+    }
+  }
+  double operator()(int a, int b) const { return d_[static_cast<size_t>(slot_[a]) * m_ + slot_[b]]; }
+
+ private:
+  std::vector<int> slot_;
+  int m_ = 0;
+  std::vector<double> d_;
+};
+
 }  // namespace
 
 std::vector<int> largestConsistentSet(const std::vector<Eigen::Vector3d>& source,
@@ -88,12 +121,11 @@ std::vector<int> largestConsistentSet(const std::vector<Eigen::Vector3d>& source
                                       const std::vector<int>& target_ids, double tolerance, int max_steps) {
   const int n = std::min<int>(static_cast<int>(source.size()), kMaxPairs);
   std::vector<Bits> adjacent(static_cast<size_t>(n), Bits{});
+  const PointDistances source_distance(source, source_ids, n), target_distance(target, target_ids, n);
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
       if (source_ids[a] == source_ids[b] || target_ids[a] == target_ids[b]) continue;
-      const double ds = (source[a] - source[b]).norm();
-      const double dt = (target[a] - target[b]).norm();
-      if (std::abs(ds - dt) >= tolerance) continue;
+      if (std::abs(source_distance(a, b) - target_distance(a, b)) >= tolerance) continue;
       adjacent[a][b / 64] |= uint64_t{1} << (b % 64);
       adjacent[b][a / 64] |= uint64_t{1} << (a % 64);
     }
