@@ -41,25 +41,58 @@ double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match
   return config.score == NodeScore::kRatio ? static_cast<double>(matches) / enable : matches;
 }
 
-std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
-                                      const AssociationConfig& config, const DescriptorConfig& descriptor) {
-  std::vector<NodeMatch> out;
+NodeSimilarities nodeSimilarities(const DescribedFrame& query, const DescribedFrame& match,
+                                  const AssociationConfig& config, const DescriptorConfig& descriptor) {
+  NodeSimilarities out;
+  // Sized once: the pairs of each query node are the match nodes of its class (a reservation only, so a label
+  // outside the class indices just goes uncounted).
+  std::vector<int> of_class;
+  for (int j = 0; j < match.numNodes(); ++j) {
+    const int label = match.graph.nodes[j].label;
+    if (label < 0) continue;
+    if (label >= static_cast<int>(of_class.size())) of_class.resize(static_cast<size_t>(label) + 1, 0);
+    ++of_class[label];
+  }
+  size_t total = 0;
+  int rows = 0;
+  for (int i = 0; i < query.numNodes(); ++i) {
+    if (query.graph.isolated[i]) continue;
+    ++rows;
+    const int label = query.graph.nodes[i].label;
+    if (label >= 0 && label < static_cast<int>(of_class.size())) total += static_cast<size_t>(of_class[label]);
+  }
+  out.pairs.reserve(total);
+  out.start.reserve(static_cast<size_t>(rows) + 1);
+  out.start.push_back(0);
   for (int i = 0; i < query.numNodes(); ++i) {
     if (query.graph.isolated[i]) continue;
     const int label = query.graph.nodes[i].label;
-    int best = -1;
-    double best_score = 0.0;
     for (int j = 0; j < match.numNodes(); ++j) {
       if (match.graph.nodes[j].label != label) continue;
-      const double s = nodeSimilarity(query.local[i], match.local[j], config, descriptor);
-      if (s > best_score) {  // strict, starting from 0: ties keep the lowest j (algorithm §6)
-        best_score = s;
-        best = j;
-      }
+      out.pairs.push_back(NodeMatch{i, j, nodeSimilarity(query.local[i], match.local[j], config, descriptor)});
     }
-    if (best >= 0 && best_score >= config.sigma_2) out.push_back(NodeMatch{i, best, best_score});
+    out.start.push_back(static_cast<int>(out.pairs.size()));
   }
   return out;
+}
+
+std::vector<NodeMatch> associateNodes(const NodeSimilarities& similarities, const AssociationConfig& config) {
+  std::vector<NodeMatch> out;
+  for (size_t k = 0; k + 1 < similarities.start.size(); ++k) {
+    const NodeMatch* best = nullptr;
+    for (int p = similarities.start[k]; p < similarities.start[k + 1]; ++p) {
+      const NodeMatch& m = similarities.pairs[p];
+      // Strict, starting from 0: ties keep the lowest match node (algorithm §6).
+      if (m.similarity > (best ? best->similarity : 0.0)) best = &m;
+    }
+    if (best && best->similarity >= config.sigma_2) out.push_back(NodeMatch{best->query, best->match, best->similarity});
+  }
+  return out;
+}
+
+std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
+                                      const AssociationConfig& config, const DescriptorConfig& descriptor) {
+  return associateNodes(nodeSimilarities(query, match, config, descriptor), config);
 }
 
 }  // namespace sgtllc

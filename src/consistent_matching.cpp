@@ -9,15 +9,15 @@ namespace sgtllc {
 std::vector<NodeMatch> hypothesisPairs(const DescribedFrame& query, const DescribedFrame& match, int per_node,
                                        const AssociationConfig& association, const DescriptorConfig& descriptor,
                                        int max_pairs) {
+  return hypothesisPairs(nodeSimilarities(query, match, association, descriptor), per_node, max_pairs);
+}
+
+std::vector<NodeMatch> hypothesisPairs(const NodeSimilarities& similarities, int per_node, int max_pairs) {
   std::vector<NodeMatch> out;
   std::vector<NodeMatch> ranked;
-  for (int i = 0; i < query.numNodes(); ++i) {
-    if (query.graph.isolated[i]) continue;
-    ranked.clear();
-    for (int j = 0; j < match.numNodes(); ++j) {
-      if (match.graph.nodes[j].label != query.graph.nodes[i].label) continue;
-      ranked.push_back({i, j, nodeSimilarity(query.local[i], match.local[j], association, descriptor)});
-    }
+  for (size_t k = 0; k + 1 < similarities.start.size(); ++k) {
+    ranked.assign(similarities.pairs.begin() + similarities.start[k],
+                  similarities.pairs.begin() + similarities.start[k + 1]);
     const size_t keep = std::min(ranked.size(), static_cast<size_t>(std::max(per_node, 0)));
     std::partial_sort(ranked.begin(), ranked.begin() + keep, ranked.end(), [](const NodeMatch& a, const NodeMatch& b) {
       return a.similarity != b.similarity ? a.similarity > b.similarity : a.match < b.match;

@@ -117,15 +117,14 @@ void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, con
 /// nodes are hypotheses, their largest pairwise-consistent one-to-one set the inliers. Where the descriptors of a
 /// sparse or re-labelled graph change with the viewpoint, the true pairs are rarely each node's best match but
 /// still agree in their distances. Returns a result with rejection kRansacFailed when no rigid set is found.
-MatchResult matchByConsistency(const DescribedFrame& query, const DescribedFrame& match, const Config& config,
-                               double score_c) {
+MatchResult matchByConsistency(const DescribedFrame& query, const DescribedFrame& match,
+                               const NodeSimilarities& similarities, const Config& config, double score_c) {
   const VerificationConfig& vc = config.verification;
   MatchResult result;
   result.score_c = score_c;
   result.rejection = Rejection::kRansacFailed;
   result.by_consistency = true;
-  const std::vector<NodeMatch> pairs =
-      hypothesisPairs(query, match, vc.consistency_pairs, config.association, config.descriptor);
+  const std::vector<NodeMatch> pairs = hypothesisPairs(similarities, vc.consistency_pairs);
   if (static_cast<int>(pairs.size()) < vc.min_inliers) return result;
   std::vector<Eigen::Vector3d> source, target;
   std::vector<int> source_ids, target_ids;
@@ -167,10 +166,11 @@ MatchResult matchByConsistency(const DescribedFrame& query, const DescribedFrame
 }
 
 /// The paper's path: LA by descriptors, the gates, RANSAC, guided matching (algorithm §6, §7.1–§7.3).
-MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
+MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame& match,
+                               const NodeSimilarities& similarities, const Config& config) {
   const VerificationConfig& vc = config.verification;
   MatchResult result;
-  result.associations = associateNodes(query, match, config.association, config.descriptor);
+  result.associations = associateNodes(similarities, config.association);
   const int la = static_cast<int>(result.associations.size());
   result.score_c = query.numNodes() > 0 ? static_cast<double>(la) / query.numNodes() : 0.0;
   if (result.score_c < vc.sigma_3 || la < vc.min_associations || la == 0) {
@@ -216,7 +216,9 @@ MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame
 }  // namespace
 
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
-  MatchResult result = matchByDescriptors(query, match, config);
+  // The node similarities are computed once: the consistency path ranks the same ones.
+  const NodeSimilarities similarities = nodeSimilarities(query, match, config.association, config.descriptor);
+  MatchResult result = matchByDescriptors(query, match, similarities, config);
   const VerificationConfig& vc = config.verification;
   if (vc.consistency_pairs <= 0 || !vc.use_ransac || vc.score_formula != ScoreFormula::kOverlap ||
       isLoop(result, vc)) {
@@ -225,7 +227,7 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
   // Its many hypotheses find a small consistent set more often by chance than RANSAC on LA does, so it answers
   // only where the footprints can judge its pose, and by a stricter share (BENCHMARKS.md "Consistency path").
   if (query.footprint.empty() || match.footprint.empty() || vc.min_footprint_overlap <= 0.0) return result;
-  MatchResult consistent = matchByConsistency(query, match, config, result.score_c);
+  MatchResult consistent = matchByConsistency(query, match, similarities, config, result.score_c);
   if (!isLoop(consistent, vc) || consistent.footprint.compared < kMinFootprintCells) {
     return result;
   }

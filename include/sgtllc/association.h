@@ -25,9 +25,21 @@ struct NodeMatch {
 double nodeSimilarity(const LocalDescriptor& query, const LocalDescriptor& match, const AssociationConfig& config,
                       const DescriptorConfig& descriptor);
 
+/// The similarity of every non-isolated query node to every same-class match node: the pairs of query node i are
+/// pairs[start[k]] … pairs[start[k + 1] − 1] for the k-th non-isolated node, in match-node order. Computed once
+/// per candidate, it serves both the association and the consistency path (consistent_matching.h).
+struct NodeSimilarities {
+  std::vector<int> start;        ///< one more entry than there are non-isolated query nodes
+  std::vector<NodeMatch> pairs;  ///< query, match, similarity
+};
+NodeSimilarities nodeSimilarities(const DescribedFrame& query, const DescribedFrame& match,
+                                  const AssociationConfig& config, const DescriptorConfig& descriptor);
+
 /// LA: for every non-isolated query node, its most similar same-class match node (ties to the lowest index),
 /// kept iff S ≥ σ_2. Several query nodes may share a match node, as in Algorithm 1. In query-node order.
 std::vector<NodeMatch> associateNodes(const DescribedFrame& query, const DescribedFrame& match,
                                       const AssociationConfig& config, const DescriptorConfig& descriptor);
+/// The same, from the similarities already computed.
+std::vector<NodeMatch> associateNodes(const NodeSimilarities& similarities, const AssociationConfig& config);
 
 }  // namespace sgtllc

@@ -19,6 +19,8 @@ namespace sgtllc {
 std::vector<NodeMatch> hypothesisPairs(const DescribedFrame& query, const DescribedFrame& match, int per_node,
                                        const AssociationConfig& association, const DescriptorConfig& descriptor,
                                        int max_pairs = 256);
+/// The same, from the similarities already computed (association.h).
+std::vector<NodeMatch> hypothesisPairs(const NodeSimilarities& similarities, int per_node, int max_pairs = 256);
 
 /// The largest set of pairs (source_k, target_k) that are one-to-one (no source or target point used twice; the
 /// caller gives each point one index, @p source_ids and @p target_ids) and pairwise consistent: every two of them
