@@ -10,7 +10,7 @@
 
 #include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/detector.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/io/trajectory.h"
 #include "sgtllc/sim/sequence_writer.h"
 #include "sgtllc/sim/simulator.h"
@@ -153,11 +153,11 @@ class AccumulatingSource : public ::testing::Test {
   std::string dir(int n) const { return (root_ / ("acc" + std::to_string(n))).string(); }
 
   /// Nodes of every frame as the detector stores them.
-  static std::vector<std::vector<Node>> streamed(const eval::FrameSource& source, const Config& config, int threads,
+  static std::vector<std::vector<Node>> streamed(const pipeline::FrameSource& source, const Config& config, int threads,
                                                  size_t* max_bytes) {
     LoopDetector detector(config);
     std::vector<std::vector<Node>> nodes;
-    eval::streamSequence(source, detector, threads, [&](size_t i, const eval::LoadedFrame& f, const FrameResult&) {
+    pipeline::streamSequence(source, detector, threads, [&](size_t i, const pipeline::LoadedFrame& f, const FrameResult&) {
       nodes.push_back(detector.database().nodes(static_cast<int>(i)));
       if (max_bytes) *max_bytes = std::max(*max_bytes, f.buffer_bytes);
     });
@@ -178,14 +178,14 @@ void expectSameNodes(const std::vector<Node>& a, const std::vector<Node>& b, siz
 TEST_F(AccumulatingSource, MatchesTheWrittenAccumulationAtAnyThreadCount) {
   // The un-accumulated drive, accumulated from its poses.txt + calib.txt, against the simulator's 6-scan files.
   const Config config;
-  eval::FrameSource raw = eval::FrameSource::semanticKitti(dir(1), config);
+  pipeline::FrameSource raw = pipeline::FrameSource::semanticKitti(dir(1), config);
   const io::Trajectory truth = io::readTrajectory(dir(1) + "/poses.txt", dir(1) + "/calib.txt");
   raw.accumulate(6, truth.poses);
   EXPECT_EQ(raw.accumulated(), 6);
   size_t max_bytes = 0;
   const auto one = streamed(raw, config, 1, &max_bytes);
   const auto two = streamed(raw, config, 2, nullptr);
-  const auto written = streamed(eval::FrameSource::semanticKitti(dir(6), config), config, 1, nullptr);
+  const auto written = streamed(pipeline::FrameSource::semanticKitti(dir(6), config), config, 1, nullptr);
   ASSERT_EQ(one.size(), 15u);
   ASSERT_EQ(written.size(), 15u);
   size_t total = 0;
@@ -204,7 +204,7 @@ TEST_F(AccumulatingSource, MatchesTheWrittenAccumulationAtAnyThreadCount) {
 
 TEST_F(AccumulatingSource, RefusesNodeFilesAndAWrongPoseCount) {
   const Config config;
-  eval::FrameSource raw = eval::FrameSource::semanticKitti(dir(1), config);
+  pipeline::FrameSource raw = pipeline::FrameSource::semanticKitti(dir(1), config);
   std::vector<Eigen::Isometry3d> poses(14, Eigen::Isometry3d::Identity());
   EXPECT_THAT([&] { raw.accumulate(6, poses); }, ThrowsMessage<Error>(HasSubstr("14 poses for 15 frames")));
   EXPECT_THAT([&] { raw.accumulate(0, poses); }, ThrowsMessage<Error>(HasSubstr("must be 1..1000")));

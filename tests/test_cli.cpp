@@ -274,7 +274,7 @@ TEST_F(Cli, RunReadsNodeFilesLikeScans) {
   // node files hold the nodes those scans give.
   makeSequence(dir_ / "seq");
   const Config config;
-  test::writeNodeFiles(eval::FrameSource::semanticKitti((dir_ / "seq").string(), config), (dir_ / "nodes").string());
+  test::writeNodeFiles(pipeline::FrameSource::semanticKitti((dir_ / "seq").string(), config), (dir_ / "nodes").string());
   ASSERT_EQ(run("run " + (dir_ / "seq").string() + " --out " + path("scans.csv")).status, 0);
   const CliRun r = run("run --nodes " + (dir_ / "nodes").string() + " --out " + path("nodes.csv"));
   ASSERT_EQ(r.status, 0) << r.out;

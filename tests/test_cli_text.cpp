@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/io/csv.h"
 #include "sgtllc/io/loops_csv.h"
 #include "test_cli_support.h"
@@ -47,12 +47,12 @@ class CliText : public test::CliTempDirTest {
   /// in dir_/NODES, frame 53's named @p revisit (a name that sorts after 000052, so that it stays frame 53).
   void nodeFolder(const std::string& nodes, const std::string& revisit) {
     if (!fs::exists(path("seq"))) test::makePlantedSequence(path("seq"));
-    test::writeNodeFiles(eval::FrameSource::semanticKitti(path("seq"), Config{}), path(nodes));
+    test::writeNodeFiles(pipeline::FrameSource::semanticKitti(path("seq"), Config{}), path(nodes));
     fs::rename(path(nodes + "/000053.txt"), path(nodes + "/" + revisit + ".txt"));
   }
   /// The names of the node folder @p nodes, in frame order.
   std::vector<std::string> names(const std::string& nodes) const {
-    const eval::FrameSource source = eval::FrameSource::nodeFiles(path(nodes), Config{});
+    const pipeline::FrameSource source = pipeline::FrameSource::nodeFiles(path(nodes), Config{});
     std::vector<std::string> out;
     for (size_t i = 0; i < source.size(); ++i) out.push_back(source.name(i));
     return out;

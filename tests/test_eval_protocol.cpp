@@ -14,6 +14,8 @@
 namespace sgtllc::eval {
 namespace {
 
+using pipeline::FrameSource;
+
 namespace fs = std::filesystem;
 
 class PlantedSequence : public ::testing::Test {

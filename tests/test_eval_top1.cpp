@@ -17,6 +17,8 @@
 namespace sgtllc::eval {
 namespace {
 
+using pipeline::FrameSource;
+
 namespace fs = std::filesystem;
 
 /// A queried frame whose candidates lie at the given (distance, score, verified) and whose top-1 is @p best.

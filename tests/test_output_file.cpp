@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "sgtllc/config.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/io/output_file.h"
 #include "sgtllc/io/sequence.h"
 #include "test_io_support.h"
@@ -185,7 +185,7 @@ TEST_F(OutputFile, ALeftoverOfSigkillIsRecognisableAndNoReaderTakesItForAFrame) 
     EXPECT_TRUE(io::isTemporaryFileName(names[0])) << names[0];
   }
   EXPECT_EQ(io::SequenceDir(path("seq"), io::SequenceLabels{false, ""}).size(), 1u);
-  EXPECT_EQ(eval::FrameSource::nodeFiles(path("nodes"), Config{}).size(), 1u);
+  EXPECT_EQ(pipeline::FrameSource::nodeFiles(path("nodes"), Config{}).size(), 1u);
 }
 
 TEST_F(OutputFile, TheNextSaveRemovesALeftoverButNotALiveTemporary) {

@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/types.h"
@@ -73,7 +73,7 @@ inline PoseError poseError(const Eigen::Matrix4d& estimate, const Eigen::Matrix4
 }
 
 /// Writes every frame of @p source as a node file DIR/NAME.txt (what a user with their own object extraction gives).
-inline void writeNodeFiles(const eval::FrameSource& source, const std::string& dir) {
+inline void writeNodeFiles(const pipeline::FrameSource& source, const std::string& dir) {
   std::filesystem::create_directories(dir);
   for (size_t i = 0; i < source.size(); ++i) {
     io::writeNodesTxt(dir + "/" + source.name(i) + ".txt", source.load(i).nodes);

@@ -19,7 +19,7 @@ void addAccumulateOption(CLI::App& cmd, int& scans) {
       ->capture_default_str();
 }
 
-void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
+void applyAccumulation(pipeline::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
                        const std::string& calib, io::PoseFrame frame) {
   if (scans <= 1) return;
   if (odometry) {
@@ -33,7 +33,7 @@ void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odo
   source.accumulate(scans, readOdometry(poses, sequenceCalib(calib, sequence), frame, source.size()).poses);
 }
 
-void AccumulationCost::add(const eval::LoadedFrame& frame) {
+void AccumulationCost::add(const pipeline::LoadedFrame& frame) {
   ms.push_back(frame.accumulate_ms);
   max_bytes = std::max(max_bytes, frame.buffer_bytes);
 }

@@ -9,7 +9,7 @@
 
 #include "common.h"
 #include "loop_closing.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 
 namespace sgtllc::cli {
 
@@ -20,7 +20,7 @@ void addAccumulateOption(CLI::App& cmd, int& scans);
 /// for the back end too), else by SEQ_DIR/poses.txt read by the pose-frame rule with @p calib (default
 /// SEQ_DIR/calib.txt) and @p frame. Throws sgtllc::Error naming the file if it is missing, malformed or has not one
 /// pose per frame, or if its frame is cam0 or undecided without a calib (readOdometry).
-void applyAccumulation(eval::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
+void applyAccumulation(pipeline::FrameSource& source, int scans, const Odometry* odometry, const std::string& sequence,
                        const std::string& calib, io::PoseFrame frame);
 
 /// What accumulation cost over a run: merge time per frame and the largest buffer.
@@ -28,7 +28,7 @@ struct AccumulationCost {
   std::vector<double> ms;   ///< per frame
   size_t max_bytes = 0;     ///< ScanAccumulator::bytes, largest over the run
 
-  void add(const eval::LoadedFrame& frame);
+  void add(const pipeline::LoadedFrame& frame);
   Json json(int scans) const;
   std::string text(int scans) const;
 };

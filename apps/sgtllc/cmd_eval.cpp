@@ -179,7 +179,7 @@ void runEval(const EvalCliOptions& o) {
     if (!o.report.empty()) checkReportFiles(o.report, kClosingReportFiles, o.force);
     checkClosingOutputs(o.outputs, o.force);
   }
-  eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
+  pipeline::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   eval::EvalOptions options;
   options.threads = config.threads;
   Progress progress("frames", source.size());

@@ -101,7 +101,7 @@ std::string hitLine(const Hit& h) {
 void localizeCommand(const LocalizeOptions& o) {
   const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   if (!o.out.empty()) checkWritable(o.out, o.force);
-  const eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
+  const pipeline::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   const std::string& query_name = o.nodes.empty() ? o.sequence : o.nodes;
   const map::Relocalizer relocalizer(map::readMapFile(o.map, config), config, o.map);
   const map::Map& m = relocalizer.map();

@@ -47,7 +47,7 @@ std::vector<std::string> frameNames(const std::string& frames, size_t count, con
       for (size_t i = 0; i < seq.size(); ++i) names.push_back(seq.frameName(i));
       return names;
     }
-    const eval::FrameSource source = eval::FrameSource::nodeFiles(frames, config);
+    const pipeline::FrameSource source = pipeline::FrameSource::nodeFiles(frames, config);
     for (size_t i = 0; i < source.size(); ++i) names.push_back(source.name(i));
     return names;
   }

@@ -7,7 +7,7 @@
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
@@ -59,7 +59,7 @@ void noteShortSequence(const std::string& name, size_t frames, const Config& con
 /// Poses a saved map places its frames by (T_world_lidar) when there is no --odometry (then the corrected
 /// trajectory is stored): SEQ_DIR/poses.txt with its calib.txt when both exist (frames named by their line), else
 /// none. A --nodes folder holds only node files, so its poses come from --odometry. @p from says which.
-std::vector<Eigen::Matrix4d> sequencePoses(const RunOptions& o, const eval::FrameSource& source, std::string* from) {
+std::vector<Eigen::Matrix4d> sequencePoses(const RunOptions& o, const pipeline::FrameSource& source, std::string* from) {
   namespace fs = std::filesystem;
   std::vector<Eigen::Matrix4d> poses;
   *from = "none (give --odometry, or a SEQ_DIR with poses.txt and calib.txt)";
@@ -86,7 +86,7 @@ void runSequence(const RunOptions& o) {
   if (!o.out.empty()) checkWritable(o.out, o.force);
   checkClosingOutputs(o.outputs, o.force);
   if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
-  eval::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
+  pipeline::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
   std::unique_ptr<Odometry> odometry;
   if (!o.odometry.empty()) {
     odometry = std::make_unique<Odometry>(
@@ -109,8 +109,8 @@ void runSequence(const RunOptions& o) {
   std::vector<double> frame_ms, load_ms;
   Progress progress("frames", source.size());
   UnknownLabels unknown;
-  eval::streamSequence(source, detector, config.threads,
-                       [&](size_t index, const eval::LoadedFrame& loaded, const FrameResult& r) {
+  pipeline::streamSequence(source, detector, config.threads,
+                       [&](size_t index, const pipeline::LoadedFrame& loaded, const FrameResult& r) {
     frame_ms.push_back(r.timing.total_ms());
     load_ms.push_back(loaded.load_ms);
     accumulation.add(loaded);

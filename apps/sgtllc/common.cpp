@@ -43,15 +43,15 @@ Config loadConfigOption(const std::string& path, int threads, const std::string&
   return config;
 }
 
-eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
+pipeline::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
                               const std::string& labels_dir) {
   if (!labels_dir.empty() && !nodes.empty()) throw Error("--labels-dir and --nodes exclude each other");
   if (!labels_dir.empty() && config.labeller.source == LabelSource::kGeometric) {
     throw Error("--labels-dir and --labeller geometric exclude each other (the geometric labeller reads no labels)");
   }
-  if (!nodes.empty()) return eval::FrameSource::nodeFiles(nodes, config);
+  if (!nodes.empty()) return pipeline::FrameSource::nodeFiles(nodes, config);
   try {
-    return eval::FrameSource::semanticKitti(sequence, config, {labels_dir});
+    return pipeline::FrameSource::semanticKitti(sequence, config, {labels_dir});
   } catch (const Error& e) {
     // io says which label file is missing; the ways round it are options of this tool (docs/labeller.md).
     if (std::string(e.what()).find(": missing label file (") == std::string::npos) throw;

@@ -12,7 +12,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/detector.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::cli {
@@ -34,7 +34,7 @@ Config loadConfigOption(const std::string& path, int threads, const std::string&
 
 /// The frames of a sequence: the node files in @p nodes if given (--nodes), else @p sequence's scans and labels
 /// (from @p labels_dir if given: --labels-dir; none with labeller.source geometric).
-eval::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
+pipeline::FrameSource frameSource(const std::string& sequence, const std::string& nodes, const Config& config,
                               const std::string& labels_dir = "");
 
 /// What a SEQ_DIR argument holds (run, eval, localize; io/sequence.h).

@@ -28,7 +28,7 @@ void addTrackOption(CLI::App* cmd, bool* track) {
                 "3 m + 2 m per frame of the last accepted one, within 10 frames (docs/relocalization.md)");
 }
 
-std::vector<Hit> localizeSequence(const eval::FrameSource& source, const map::Relocalizer& relocalizer,
+std::vector<Hit> localizeSequence(const pipeline::FrameSource& source, const map::Relocalizer& relocalizer,
                                   const std::string& query_name, const std::string& map_path, int threads,
                                   const std::optional<map::TrackingOptions>& tracking,
                                   const std::function<void(size_t, const Hit&)>& on_hit) {
@@ -38,7 +38,7 @@ std::vector<Hit> localizeSequence(const eval::FrameSource& source, const map::Re
   std::unordered_map<std::string, int> map_frames;
   for (int f = 0; f < m.size(); ++f) map_frames.emplace(m.names[static_cast<size_t>(f)], f);
   std::vector<Hit> hits;
-  eval::streamFrames(source, threads, [&](size_t index, eval::LoadedFrame& frame) {
+  pipeline::streamFrames(source, threads, [&](size_t index, pipeline::LoadedFrame& frame) {
     // Two sessions that both number their frames 000000, … do not clash: only the same name with the same nodes.
     const auto same = map_frames.find(source.name(index));
     if (same != map_frames.end() && sameNodes(frame.nodes, m.database.nodes(same->second))) {

@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/map/relocalization_tracker.h"
 #include "sgtllc/map/relocalizer.h"
 
@@ -27,11 +27,11 @@ struct Hit {
 };
 
 /// Relocalizes every frame of @p source in @p relocalizer's map, in order, loading frames in parallel batches
-/// (eval::streamFrames; the answers do not depend on config.threads). @p on_hit sees each answer as it comes.
+/// (pipeline::streamFrames; the answers do not depend on config.threads). @p on_hit sees each answer as it comes.
 /// With @p tracking, the frames are one stream (map::RelocalizationTracker; --track), else each is answered alone.
 /// Throws sgtllc::Error naming @p query_name and @p map_path when a query frame is the map frame of the same name
 /// with the same nodes: the map's own session fed back, whose every answer would be that frame itself.
-std::vector<Hit> localizeSequence(const eval::FrameSource& source, const map::Relocalizer& relocalizer,
+std::vector<Hit> localizeSequence(const pipeline::FrameSource& source, const map::Relocalizer& relocalizer,
                                   const std::string& query_name, const std::string& map_path, int threads,
                                   const std::optional<map::TrackingOptions>& tracking,
                                   const std::function<void(size_t, const Hit&)>& on_hit);

@@ -99,7 +99,7 @@ backend::Matrix6d nominalLoopInformation(const backend::LoopNoise& noise) {
   return backend::loopInformation(centres, centres, Eigen::Isometry3d::Identity(), noise);
 }
 
-ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& db, const eval::FrameSource& source,
+ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& db, const pipeline::FrameSource& source,
                          const backend::LoopNoise& noise) {
   ClosingLoop loop;
   loop.query = source.name(query);

@@ -57,7 +57,7 @@ struct ClosingLoop {
 
 /// The loop edge of a detected loop: loopEdge() on the two frames' stored nodes, or the nominal information if the
 /// inlier centres are collinear.
-ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& db, const eval::FrameSource& source,
+ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& db, const pipeline::FrameSource& source,
                          const backend::LoopNoise& noise);
 
 /// The loops CSV record of a loop (with its information, if any).

@@ -43,7 +43,7 @@ std::string summaryText(const eval::RelocalizationMetrics& m) {
 void evalRelocalization(const std::string& map_path, const std::string& sequence, const std::string& nodes,
                         const std::string& labels_dir, const Config& config, bool json,
                         const std::optional<map::TrackingOptions>& tracking) {
-  const eval::FrameSource source = frameSource(sequence, nodes, config, labels_dir);
+  const pipeline::FrameSource source = frameSource(sequence, nodes, config, labels_dir);
   const std::string poses_path = (fs::path(sequence) / "poses.txt").string();
   if (!fs::exists(poses_path)) {
     throw Error(poses_path + ": missing (the relocalization protocol needs the query session's ground-truth poses)");

@@ -116,7 +116,7 @@ void scorePairs(PairListRun& run, const std::vector<DescribedFrame>& frames, con
 
 }  // namespace
 
-PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<LoopPairLabel>& pairs,
+PairListRun runPairListEvaluation(const pipeline::FrameSource& source, const std::vector<LoopPairLabel>& pairs,
                                   const GroundTruth& truth, const Config& config, const EvalOptions& options) {
   config.validate();
   std::map<long, size_t> index_of, slot_of;
@@ -125,7 +125,7 @@ PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<L
   std::vector<size_t> needed;
   PairListRun run = planPairs(pairs, index_of, &needed, &slot_of);
   const FrameOf frame_of = [&source](size_t i) {
-    LoadedFrame f = source.load(i);
+    pipeline::LoadedFrame f = source.load(i);
     return std::make_pair(std::move(f.nodes), std::move(f.footprint));
   };
   const auto frames = describeNeeded(needed, frame_of, config, options.threads);

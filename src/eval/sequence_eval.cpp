@@ -6,7 +6,7 @@
 
 namespace sgtllc::eval {
 
-SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& truth, const Config& config,
+SequenceRun runSequenceEvaluation(const pipeline::FrameSource& source, const GroundTruth& truth, const Config& config,
                                   const EvalOptions& options) {
   SequenceRun run;
   std::vector<long> numbers(source.size());
@@ -23,7 +23,7 @@ SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& 
   const int gap = config.retrieval.exclude_recent;
   LoopDetector detector(config);
   int loops = 0;
-  streamSequence(source, detector, options.threads, [&](size_t i, const LoadedFrame& loaded, const FrameResult& r) {
+  pipeline::streamSequence(source, detector, options.threads, [&](size_t i, const pipeline::LoadedFrame& loaded, const FrameResult& r) {
     FrameRecord rec;
     rec.frame = numbers[i];
     rec.name = source.name(i);

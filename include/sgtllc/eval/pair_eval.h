@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sgtllc/config.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/sequence_eval.h"
 
@@ -44,7 +44,7 @@ struct PairListRun {
 
 /// Scores every pair whose two frames are in @p source (each frame is read and clustered once, in parallel).
 /// @p truth may be empty (no poses): then no pose errors are computed.
-PairListRun runPairListEvaluation(const FrameSource& source, const std::vector<LoopPairLabel>& pairs,
+PairListRun runPairListEvaluation(const pipeline::FrameSource& source, const std::vector<LoopPairLabel>& pairs,
                                   const GroundTruth& truth, const Config& config, const EvalOptions& options);
 /// The same on frames already reduced to nodes, e.g. those an online run stored (`sgtllc eval` scores a
 /// sequence's loop_pairs.txt this way without reading the scans again): @p nodes[i] are the nodes of frame number

@@ -11,7 +11,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/detector.h"
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/metrics.h"
 #include "sgtllc/eval/refinement_stats.h"
@@ -81,7 +81,7 @@ struct SequenceRun {
 
 /// Streams @p source through a LoopDetector(@p config) and records every query against @p truth. Throws
 /// sgtllc::Error if a frame name is not a frame number with a ground-truth pose.
-SequenceRun runSequenceEvaluation(const FrameSource& source, const GroundTruth& truth, const Config& config,
+SequenceRun runSequenceEvaluation(const pipeline::FrameSource& source, const GroundTruth& truth, const Config& config,
                                   const EvalOptions& options);
 
 /// Metrics of one PR curve.

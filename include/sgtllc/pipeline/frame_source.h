@@ -13,7 +13,7 @@
 #include "sgtllc/detector.h"
 #include "sgtllc/node_extraction.h"
 
-namespace sgtllc::eval {
+namespace sgtllc::pipeline {
 
 /// One frame reduced to nodes, with what it cost.
 struct LoadedFrame {
@@ -88,4 +88,4 @@ void streamFrames(const FrameSource& source, int threads, const std::function<vo
 void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
                     const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame);
 
-}  // namespace sgtllc::eval
+}  // namespace sgtllc::pipeline

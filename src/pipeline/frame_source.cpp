@@ -1,4 +1,4 @@
-#include "sgtllc/eval/frame_source.h"
+#include "sgtllc/pipeline/frame_source.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +15,7 @@
 
 namespace fs = std::filesystem;
 
-namespace sgtllc::eval {
+namespace sgtllc::pipeline {
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
@@ -216,4 +216,4 @@ void streamSequence(const FrameSource& source, LoopDetector& detector, int threa
   });
 }
 
-}  // namespace sgtllc::eval
+}  // namespace sgtllc::pipeline
