@@ -85,7 +85,9 @@ std::vector<NodeMatch> associateNodes(const NodeSimilarities& similarities, cons
       // Strict, starting from 0: ties keep the lowest match node (algorithm §6).
       if (m.similarity > (best ? best->similarity : 0.0)) best = &m;
     }
-    if (best && best->similarity >= config.sigma_2) out.push_back(NodeMatch{best->query, best->match, best->similarity});
+    if (best && best->similarity >= config.sigma_2) {
+      out.push_back(NodeMatch{best->query, best->match, best->similarity});
+    }
   }
   return out;
 }

@@ -88,8 +88,8 @@ std::vector<std::vector<int>> membersOf(const std::vector<int>& point_voxel, con
 /// Poles and trunks inside larger segments (a trunk under its crown, a pole touching a hedge): the points of a
 /// horizontal slice of the scene, pole_slice_low..pole_slice_high above the ground, are segmented on their own;
 /// a slice component that is thin (4 std devs ≤ pole_max_width), spans pole_min_span of height and is seen whole
-/// against the points flagged in @p seen (none: every thin component is) is a pole section, and every point of its segment within pole_radius
-/// of its axis, up to kPoleAboveSlice above the slice, becomes kPole.
+/// against the points flagged in @p seen (none: every thin component is) is a pole section, and every point of
+/// its segment within pole_radius of its axis, up to kPoleAboveSlice above the slice, becomes kPole.
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole
 /// landmarks extracted from 3-D lidar scans", ECMR 2019 (docs/labeller.md §4).
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
