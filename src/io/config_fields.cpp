@@ -1,108 +1,15 @@
-// The configuration key table: one Field per key of sgtllc::Config, with its comment, printer and parser.
+// The configuration key table: one Field per key of sgtllc::Config, with its comment, printer and parser (the
+// kinds of value in config_field_kinds.h; here the label fields whose values are maps and lists of their own).
 #include "config_fields.h"
 
-#include <cerrno>
-#include <charconv>
-#include <cmath>
-#include <cstdlib>
-#include <limits>
 #include <utility>
 
+#include "config_field_kinds.h"
 #include "config_yaml_backend.h"
 #include "sgtllc/io/quote.h"
 
 namespace sgtllc::io::detail {
 namespace {
-
-bool parseInt(const std::string& s, long long lo, long long hi, long long* out) {
-  if (s.empty()) return false;
-  const auto res = std::from_chars(s.data(), s.data() + s.size(), *out);
-  return res.ec == std::errc() && res.ptr == s.data() + s.size() && *out >= lo && *out <= hi;
-}
-
-std::string scalarText(const YAML::Node& node) { return node.IsScalar() ? node.Scalar() : std::string(); }
-
-std::string formatDouble(double v) {
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof(buf), v);
-  std::string s(buf, res.ptr);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // keep floats recognisable as floats
-  return s;
-}
-
-bool parseDouble(const std::string& s, double* out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  *out = std::strtod(s.c_str(), &end);
-  return errno == 0 && end == s.c_str() + s.size() && std::isfinite(*out);
-}
-
-
-using DoubleRef = std::function<double&(Config&)>;
-
-Field number(std::string key, std::string comment, DoubleRef ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return formatDouble(ref(const_cast<Config&>(c))); },
-               [ref](Config& c, const YAML::Node& n) -> std::string {
-                 double v = 0.0;
-                 if (!parseDouble(scalarText(n), &v)) return "expected a finite number";
-                 ref(c) = v;
-                 return "";
-               }};
-}
-
-template <typename T>
-Field integer(std::string key, std::string comment, std::function<T&(Config&)> ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return std::to_string(ref(const_cast<Config&>(c))); },
-               [ref](Config& c, const YAML::Node& n) -> std::string {
-                 long long v = 0;
-                 const long long lo = std::numeric_limits<T>::min(), hi = std::numeric_limits<T>::max();
-                 if (!parseInt(scalarText(n), lo, hi, &v)) {
-                   return "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
-                 }
-                 ref(c) = static_cast<T>(v);
-                 return "";
-               }};
-}
-
-Field boolean(std::string key, std::string comment, std::function<bool&(Config&)> ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return std::string(ref(const_cast<Config&>(c)) ? "true" : "false"); },
-               [ref](Config& c, const YAML::Node& n) -> std::string {
-                 const std::string s = scalarText(n);
-                 if (s != "true" && s != "false") return "expected true or false";
-                 ref(c) = (s == "true");
-                 return "";
-               }};
-}
-
-template <typename E>
-Field choice(std::string key, std::string comment, std::function<E&(Config&)> ref,
-             std::vector<std::pair<std::string, E>> names) {
-  std::string options;
-  for (const auto& [name, value] : names) options += (options.empty() ? "" : " | ") + name;
-  comment += " (" + options + ")";
-  return Field{std::move(key), std::move(comment),
-               [ref, names](const Config& c) {
-                 const E v = ref(const_cast<Config&>(c));
-                 for (const auto& [name, value] : names) {
-                   if (value == v) return name;
-                 }
-                 return std::string("?");
-               },
-               [ref, names, options](Config& c, const YAML::Node& n) -> std::string {
-                 const std::string s = scalarText(n);
-                 for (const auto& [name, value] : names) {
-                   if (name == s) {
-                     ref(c) = value;
-                     return "";
-                   }
-                 }
-                 return "expected one of " + options;
-               }};
-}
 
 Field customMap() {
   return Field{
@@ -135,31 +42,6 @@ Field customMap() {
         }
         return "";
       }};
-}
-
-/// A list of raw label ids, e.g. [10, 252]; returns an error text ("" on success).
-std::string readIds(const YAML::Node& n, std::vector<uint32_t>* out) {
-  if (!n.IsSequence()) return "expected a list of raw ids, e.g. [10, 252]";
-  out->clear();
-  for (const auto& id : n) {
-    long long v = 0;
-    if (!parseInt(scalarText(id), 0, 0xFFFF, &v)) return "ids must be integers 0..65535";
-    out->push_back(static_cast<uint32_t>(v));
-  }
-  return "";
-}
-
-std::string idsText(const std::vector<uint32_t>& ids) {
-  std::string s = "[";
-  for (size_t k = 0; k < ids.size(); ++k) s += (k ? ", " : "") + std::to_string(ids[k]);
-  return s + "]";
-}
-
-/// A field holding a list of raw label ids (registration.ground_ids).
-Field idList(std::string key, std::string comment, std::function<std::vector<uint32_t>&(Config&)> ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return idsText(ref(const_cast<Config&>(c))); },
-               [ref](Config& c, const YAML::Node& n) -> std::string { return readIds(n, &ref(c)); }};
 }
 
 /// One entry of labels.extra_classes, `{name: NAME, ids: [ID, …]}`; returns an error text ("" on success).
