@@ -88,8 +88,9 @@ void windowsOf(const std::vector<Eigen::Vector3f>& points, const std::vector<uin
                const std::vector<int>& members, int candidate, double beside, double nearer,
                std::vector<Window>* out) {
   // The members' mean range and azimuth, their azimuth interval about it and their span of elevation.
-  std::vector<Seen> seen;
-  seen.reserve(members.size());
+  std::vector<double> azimuths;
+  azimuths.reserve(members.size());
+  float slope_lo = std::numeric_limits<float>::infinity(), slope_hi = -slope_lo;
   Seen s;
   double range = 0.0, cx = 0.0, cy = 0.0;
   for (int i : members) {
@@ -98,20 +99,18 @@ void windowsOf(const std::vector<Eigen::Vector3f>& points, const std::vector<uin
     range += s.range;
     cx += std::cos(a);
     cy += std::sin(a);
-    seen.push_back(s);
+    slope_lo = std::min(slope_lo, s.slope);
+    slope_hi = std::max(slope_hi, s.slope);
+    azimuths.push_back(a);
   }
-  if (seen.size() < 2) return;
-  range /= static_cast<double>(seen.size());
+  if (azimuths.size() < 2) return;
+  range /= static_cast<double>(azimuths.size());
   if (range < 1.0) return;
   const double centre = std::atan2(cy, cx);
   double lo = 0.0, hi = 0.0;
-  float slope_lo = std::numeric_limits<float>::infinity(), slope_hi = -slope_lo;
-  for (const Seen& m : seen) {
-    const double a = wrap(azimuthOf(m.angle) - centre);
-    lo = std::min(lo, a);
-    hi = std::max(hi, a);
-    slope_lo = std::min(slope_lo, m.slope);
-    slope_hi = std::max(slope_hi, m.slope);
+  for (double a : azimuths) {
+    lo = std::min(lo, wrap(a - centre));
+    hi = std::max(hi, wrap(a - centre));
   }
   const double width = std::min(kMaxWindow, beside / range);  // radians
   const float near_range = static_cast<float>(range - nearer);
