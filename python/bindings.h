@@ -23,6 +23,7 @@ void bindRepeatability(py::module_& m);  // repeatability.cpp: node repeatabilit
 void bindBackend(py::module_& m);        // backend.cpp: the pose-graph optimiser
 void bindAccumulate(py::module_& m);     // accumulate.cpp: ScanAccumulator (scan accumulation)
 void bindMap(py::module_& m);            // map.cpp: Map, load_map, Relocalizer
+void bindPipeline(py::module_& m);       // pipeline.cpp: LoopClosingPipeline and what it returns
 
 /// A copy of @p m (the C++ Map is move-only; Python objects share theirs).
 map::Map copyMap(const map::Map& m);

@@ -564,3 +564,41 @@ class ScanAccumulator:
     def add(self, points: ArrayLike, labels: ArrayLike, T_world_scan: ArrayLike) -> Tuple[np.ndarray, np.ndarray]: ...
     def __len__(self) -> int: ...
     def clear(self) -> None: ...
+
+# --- the loop-closing pipeline (pipeline.cpp; docs/pipeline.md) ---
+class ClosingLoop:
+    edge: Edge
+    query: str
+    match: str
+    T_match_query: np.ndarray
+    score: float
+    score_c: float
+    has_information: bool
+class Closing:
+    result: BackendResult
+    poses: np.ndarray
+    ms: float
+    final_ms: float
+    online_solve_cpu_ms: list[float]
+    online_final_shift_m: list[float]
+class PipelineFrame:
+    index: int
+    detection: FrameResult
+    loop: Optional[ClosingLoop]
+    solved: bool
+    update: Optional[BackendResult]
+    solve_ms: float
+class LoopClosingPipeline:
+    poses: np.ndarray
+    odometry: np.ndarray
+    loops: list[ClosingLoop]
+    names: list[str]
+    num_frames: int
+    config: Config
+    def __init__(self, config: Config = ..., online: bool = False, accumulate: int = 1) -> None: ...
+    def add_scan(self, points: ArrayLike, labels: Optional[ArrayLike] = None, pose: Optional[ArrayLike] = None,
+                 name: str = "", drop_nonfinite: bool = False) -> PipelineFrame: ...
+    def add_nodes(self, centres: ArrayLike, classes: ArrayLike, pose: Optional[ArrayLike] = None,
+                  name: str = "") -> PipelineFrame: ...
+    def finish(self) -> Closing: ...
+    def to_map(self, poses: Optional[ArrayLike] = None) -> Map: ...

@@ -106,7 +106,7 @@ struct EvalClosing {
   std::string summary;
 
   void finish(const eval::SequenceRun& run, const eval::GroundTruth& truth_poses, const Config& config) {
-    closing = closeLoopsBatch(*odometry, loops, config.backend);
+    closing = pipeline::closeLoopsBatch(odometry->poses, loops, config.backend);
     for (const eval::FrameRecord& f : run.frames) truth.emplace_back(truth_poses.pose(f.frame));
     comparison = compareTrajectories(truth, *odometry, closing);
     summary = closingSummary(loops, closing);
@@ -197,7 +197,8 @@ void runEval(const EvalCliOptions& o) {
         readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size()));
     options.on_frame = [&](size_t i, const FrameResult& r, const LoopDetector& detector) {
       if (const Candidate* c = r.loop()) {
-        back.loops.push_back(detectedLoop(i, *c, detector.database(), source, config.backend.loops));
+        back.loops.push_back(pipeline::detectedLoop(static_cast<int>(i), *c, detector.database(), source.name(i),
+                                                    source.name(static_cast<size_t>(c->frame)), config.backend.loops));
       }
     };
   }

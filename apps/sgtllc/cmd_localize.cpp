@@ -118,7 +118,7 @@ void localizeCommand(const LocalizeOptions& o) {
     progress.update(index + 1, std::to_string(localized) + " localized");
   };
   const std::vector<Hit> hits =
-      localizeSequence(source, relocalizer, query_name, o.map, config.threads, trackingOption(o.track), on_hit);
+      pipeline::localizeSequence(source, relocalizer, query_name, o.map, config.threads, trackingOption(o.track), on_hit);
   progress.finish();
   if (!o.out.empty()) writeOutput(o.out, hitsCsv(hits), o.force);
 

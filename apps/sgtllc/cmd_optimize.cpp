@@ -6,8 +6,8 @@
 
 #include "commands.h"
 #include "common.h"
-#include "false_loops.h"
 #include "loop_closing.h"
+#include "sgtllc/eval/false_loops.h"
 #include "sgtllc/io/config_yaml.h"
 #include "sgtllc/io/sequence.h"
 #include "trajectory_metrics.h"
@@ -95,13 +95,14 @@ void runOptimize(const OptimizeOptions& o) {
     const io::PoseFrame frame = o.calib.empty() ? o.pose_frame : io::PoseFrame::kAuto;
     truth = readOdometry(o.ground_truth, o.calib, frame, names.size()).poses;
   }
-  std::vector<ClosingLoop> loops = csvLoops(io::readLoopsCsv(o.loops, names), config.backend.loops);
+  std::vector<ClosingLoop> loops = pipeline::csvLoops(io::readLoopsCsv(o.loops, names), config.backend.loops);
   const size_t real = loops.size();
-  for (ClosingLoop& l : falseLoops(odometry.poses, loops, o.false_fraction, o.seed, names, config.backend.loops)) {
+  for (ClosingLoop& l :
+       eval::falseLoops(odometry.poses, loops, o.false_fraction, o.seed, names, config.backend.loops)) {
     loops.push_back(std::move(l));
   }
 
-  const Closing closing = closeLoopsBatch(odometry, loops, config.backend);
+  const Closing closing = pipeline::closeLoopsBatch(odometry.poses, loops, config.backend);
   writeClosingOutputs(o.outputs, odometry, loops, closing, config.backend, o.force);
 
   Json out = {{"odometry", o.odometry}, {"frames", names.size()}, {"loops_read", real},

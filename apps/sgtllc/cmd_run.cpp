@@ -2,12 +2,14 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "accumulation.h"
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
 #include "sgtllc/pipeline/frame_source.h"
+#include "sgtllc/pipeline/loop_closing_pipeline.h"
 #include "sgtllc/eval/ground_truth.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
@@ -97,73 +99,64 @@ void runSequence(const RunOptions& o) {
   std::string poses_from;
   std::vector<Eigen::Matrix4d> map_poses;
   if (!o.save_map.empty() && !odometry) map_poses = sequencePoses(o, source, &poses_from);
-  std::unique_ptr<OnlineClosing> online;
-  if (odometry && o.online) online = std::make_unique<OnlineClosing>(*odometry, config.backend);
-  LoopDetector detector(config);
-  if (source.size() <= static_cast<size_t>(detector.firstSearchedFrame())) {
+  pipeline::PipelineOptions options;
+  options.online = o.online;  // the options' check: --online needs --odometry
+  pipeline::LoopClosingPipeline closer(config, options);
+  if (source.size() <= static_cast<size_t>(closer.detector().firstSearchedFrame())) {
     noteShortSequence(o.nodes.empty() ? o.sequence : o.nodes, source.size(), config);
   }
 
-  std::vector<Loop> loops;
-  std::vector<ClosingLoop> edges;
   std::vector<double> frame_ms, load_ms;
   Progress progress("frames", source.size());
   UnknownLabels unknown;
-  pipeline::streamSequence(source, detector, config.threads,
-                       [&](size_t index, const pipeline::LoadedFrame& loaded, const FrameResult& r) {
-    frame_ms.push_back(r.timing.total_ms());
+  pipeline::streamFrames(source, config.threads, [&](size_t index, pipeline::LoadedFrame& loaded) {
     load_ms.push_back(loaded.load_ms);
     accumulation.add(loaded);
-    // Unknown label ids (a network's label space, a wrong labels.preset) are summed into one warning at the end.
     ExtractionStats stats = loaded.stats;
+    std::optional<Eigen::Isometry3d> pose;
+    if (odometry) pose = odometry->trajectory.poses[index];  // the pipeline orthonormalises it as readOdometry does
+    const pipeline::PipelineFrame f = closer.addFrame(std::move(loaded), pose, source.name(index));
+    frame_ms.push_back(f.detection.timing.total_ms());
+    // Unknown label ids (a network's label space, a wrong labels.preset) are summed into one warning at the end.
     unknown.add(source.name(index), stats.unknown_label_points);
     stats.unknown_label_points = 0;
     if (stats.nonfinite_points > 0 || stats.far_points > 0 || stats.capped_nodes > 0) {
       progress.clear();
-      warnAboutInput(source.name(index), stats, r.num_nodes);
+      warnAboutInput(source.name(index), stats, f.detection.num_nodes);
     }
-    if (const Candidate* c = r.loop()) {
-      const ClosingLoop& edge =
-          edges.emplace_back(detectedLoop(index, *c, detector.database(), source, config.backend.loops));
-      Loop& l = loops.emplace_back(loopRecord(edge, c->match.score, c->match.score_c));
-      if (!o.json && !o.quiet) {
-        progress.clear();
-        const Eigen::Vector3d t = l.T_match_query.topRightCorner<3, 1>();
-        std::cout << "loop " << io::escapeContent(l.query, io::kNameBytes) << " -> "
-                  << io::escapeContent(l.match, io::kNameBytes) << "  score " << fixed(l.score, 3) << "  score_c "
-                  << fixed(l.score_c, 3) << "  t = (" << fixed(t.x(), 2) << ", " << fixed(t.y(), 2) << ", "
-                  << fixed(t.z(), 2) << ") m" << (r.lateral ? "  lateral (a neighbour of the revisit)" : "") << "\n"
-                  << std::flush;
-      }
-      if (online) {
-        const auto start = std::chrono::steady_clock::now();
-        const backend::BackendResult& update = online->closeLoop(static_cast<int>(index), edge);
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (!o.json && !o.quiet) std::cout << onlineUpdateLine(update, ms) << std::flush;
-      }
+    if (f.loop && !o.json && !o.quiet) {
+      progress.clear();
+      const Eigen::Vector3d t = f.loop->edge.T_from_to.translation();
+      std::cout << "loop " << io::escapeContent(f.loop->query, io::kNameBytes) << " -> "
+                << io::escapeContent(f.loop->match, io::kNameBytes) << "  score " << fixed(f.loop->score, 3)
+                << "  score_c " << fixed(f.loop->score_c, 3) << "  t = (" << fixed(t.x(), 2) << ", "
+                << fixed(t.y(), 2) << ", " << fixed(t.z(), 2) << ") m"
+                << (f.detection.lateral ? "  lateral (a neighbour of the revisit)" : "") << "\n";
+      if (f.solved) std::cout << onlineUpdateLine(*f.update, f.solve_ms);
+      std::cout << std::flush;
     }
-    progress.update(index + 1, std::to_string(loops.size()) + " loops");
+    progress.update(index + 1, std::to_string(closer.loops().size()) + " loops");
   });
   progress.finish();
   unknown.warn();
-  std::unique_ptr<Closing> closing;
+  std::vector<Loop> loops;
+  for (const pipeline::ClosingLoop& l : closer.loops()) loops.push_back(pipeline::loopRecord(l));
+  const Closing* closing = nullptr;
   if (odometry) {
-    closing = std::make_unique<Closing>(online ? online->finish() : closeLoopsBatch(*odometry, edges, config.backend));
-    writeClosingOutputs(o.outputs, *odometry, edges, *closing, config.backend, o.force);
-    for (const Eigen::Isometry3d& T : closing->poses) map_poses.push_back(T.matrix());
+    closing = &closer.finish();
+    writeClosingOutputs(o.outputs, *odometry, closer.loops(), *closing, config.backend, o.force);
     poses_from = "the corrected trajectory of " + odometry->path;
   }
   if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);
   if (!o.save_map.empty()) {
-    std::vector<std::string> names;
-    for (size_t i = 0; i < source.size(); ++i) names.push_back(source.name(i));
-    map::writeMapFile(o.save_map, map::makeMap(detector.database(), config, std::move(names), std::move(map_poses),
-                                                   detector.footprints()),
-                      io::overwriteIf(o.force));
+    // With --odometry the map holds the corrected trajectory (the pipeline's poses), else SEQ_DIR's, or none.
+    std::optional<std::vector<Eigen::Matrix4d>> placed;
+    if (!odometry) placed = std::move(map_poses);
+    map::writeMapFile(o.save_map, closer.map(std::move(placed)), io::overwriteIf(o.force));
   }
 
-  const int n = detector.numFrames();
-  const double bytes_per_frame = n ? static_cast<double>(detector.database().totalBytes()) / n : 0.0;
+  const int n = closer.detector().numFrames();
+  const double bytes_per_frame = n ? static_cast<double>(closer.detector().database().totalBytes()) / n : 0.0;
   if (o.json) {
     Json list = Json::array();
     for (const Loop& l : loops) {
@@ -183,7 +176,7 @@ void runSequence(const RunOptions& o) {
                 {"db_bytes_per_frame", bytes_per_frame},
                 {"loop_list", list}};
     if (o.accumulate > 1) out["accumulation"] = accumulation.json(o.accumulate);
-    if (closing) out["backend"] = closingJson(edges, *closing);
+    if (closing) out["backend"] = closingJson(closer.loops(), *closing);
     if (!o.save_map.empty()) out["map"] = {{"path", o.save_map}, {"poses", poses_from}};
     std::cout << jsonText(out) << "\n";
   } else {
@@ -192,7 +185,7 @@ void runSequence(const RunOptions& o) {
               << " (load (not included): median " << fixed(eval::percentile(load_ms, 0.5), 2) << " ms), database "
               << fixed(bytes_per_frame, 0) << " bytes per frame\n";
     if (o.accumulate > 1) std::cout << accumulation.text(o.accumulate);
-    if (closing) std::cout << closingSummary(edges, *closing);
+    if (closing) std::cout << closingSummary(closer.loops(), *closing);
     for (const std::string* path : {&o.out, &o.outputs.trajectory, &o.outputs.graph, &o.outputs.loops}) {
       if (!path->empty()) std::cout << "wrote " << *path << "\n";
     }

@@ -1,5 +1,6 @@
-// Closing the loop from the command line (docs/backend.md): the odometry input, loop edges for the back end, batch and
-// online optimisation, and the corrected trajectory / g2o outputs shared by `run`, `optimize` and `eval`.
+// Closing the loop from the command line (docs/backend.md): the odometry input, and the corrected trajectory / g2o
+// outputs and summaries shared by `run`, `optimize` and `eval`. The closing itself is the pipeline's
+// (sgtllc/pipeline/closing.h).
 #pragma once
 
 #include <string>
@@ -9,11 +10,8 @@
 #include <Eigen/Geometry>
 
 #include "common.h"
-#include "sgtllc/backend/pose_graph_optimizer.h"
-#include "sgtllc/database.h"
-#include "sgtllc/detector.h"
-#include "sgtllc/io/loops_csv.h"
 #include "sgtllc/io/trajectory.h"
+#include "sgtllc/pipeline/closing.h"
 
 namespace sgtllc::cli {
 
@@ -43,28 +41,8 @@ Odometry readOdometry(const std::string& path, const std::string& calib, io::Pos
 /// KITTI convention: poses in cam0, Tr in the sequence's calib.txt), else none.
 std::string sequenceCalib(const std::string& calib, const std::string& sequence);
 
-/// Information of a loop whose own cannot be computed (a 16-column loops CSV, or inlier centres on one line): the
-/// loopInformation of a nominal fit of 8 inliers spread 10 m around the sensor at σ = @p noise.sigma_min.
-backend::Matrix6d nominalLoopInformation(const backend::LoopNoise& noise);
-
-/// One loop for the back end, with its frame names and where it came from.
-struct ClosingLoop {
-  backend::Edge edge;         ///< from = match frame, to = query frame
-  std::string query, match;   ///< frame names
-  bool has_information = true;  ///< false: nominalLoopInformation
-  bool injected = false;      ///< a false loop added by --add-false-loops
-};
-
-/// The loop edge of a detected loop: loopEdge() on the two frames' stored nodes, or the nominal information if the
-/// inlier centres are collinear.
-ClosingLoop detectedLoop(size_t query, const Candidate& c, const FrameDatabase& db, const pipeline::FrameSource& source,
-                         const backend::LoopNoise& noise);
-
-/// The loops CSV record of a loop (with its information, if any).
-io::LoopRecord loopRecord(const ClosingLoop& loop, double score, double score_c);
-
-/// Loops of a loops CSV read against @p frame_names (its information, or the nominal one).
-std::vector<ClosingLoop> csvLoops(const std::vector<io::LoopRecord>& records, const backend::LoopNoise& noise);
+using pipeline::Closing;
+using pipeline::ClosingLoop;
 
 /// Output files of the back end (empty = not written).
 struct ClosingOutputs {
@@ -76,41 +54,6 @@ struct ClosingOutputs {
 void addClosingOutputOptions(CLI::App& cmd, ClosingOutputs& outputs);
 /// checkWritable on every output, before any work.
 void checkClosingOutputs(const ClosingOutputs& outputs, bool force);
-
-/// What the back end made of the loops.
-struct Closing {
-  backend::BackendResult result;         ///< per-loop decisions (loops in the order given), solver statistics
-  std::vector<Eigen::Isometry3d> poses;  ///< corrected trajectory, T_world_frame
-  double ms = 0.0;                       ///< optimisation time (all solves)
-  double final_ms = 0.0;                 ///< online: the full solve after the last frame (included in ms)
-  /// Online: the process CPU time of each re-solve at a loop (ms), in the order of the loops; the final full solve
-  /// is not among them.
-  std::vector<double> online_solve_cpu_ms;
-  /// Online: how far the final full solve moved each frame from the online estimate (m): the error of the online
-  /// poses, had the drive ended before the last frame.
-  std::vector<double> online_final_shift_m;
-};
-
-/// Odometry edges + all loops, optimised once (batch).
-Closing closeLoopsBatch(const Odometry& odometry, const std::vector<ClosingLoop>& loops,
-                        const backend::BackendConfig& config);
-
-/// The online back end: frames as they arrive, a re-optimisation at every loop (PoseGraphOptimizer::closeLoop).
-class OnlineClosing {
- public:
-  OnlineClosing(const Odometry& odometry, const backend::BackendConfig& config);
-  /// Adds frames up to @p frame (odometry steps), then the loop, and re-optimises.
-  const backend::BackendResult& closeLoop(int frame, const ClosingLoop& loop);
-  /// Adds the remaining frames; the result of the last re-optimisation with every frame (odometry after it).
-  Closing finish();
-
- private:
-  const Odometry& odometry_;
-  backend::PoseGraphOptimizer optimizer_;
-  double ms_ = 0.0;
-  std::vector<double> solve_cpu_ms_;
-  void addFramesUpTo(int frame);
-};
 
 /// One line on a loop's decision after an online update.
 std::string onlineUpdateLine(const backend::BackendResult& r, double ms);

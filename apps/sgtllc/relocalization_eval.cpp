@@ -78,7 +78,7 @@ void evalRelocalization(const std::string& map_path, const std::string& sequence
     accepted += q.accepted;
     progress.update(index + 1, std::to_string(accepted) + " relocalized");
   };
-  localizeSequence(source, relocalizer, query_name, map_path, config.threads, tracking, on_hit);
+  pipeline::localizeSequence(source, relocalizer, query_name, map_path, config.threads, tracking, on_hit);
   progress.finish();
   const eval::RelocalizationMetrics metrics = eval::relocalizationMetrics(queries, map_poses, query_poses);
   const double median = eval::percentile(frame_ms, 0.5), p99 = eval::percentile(frame_ms, 0.99);

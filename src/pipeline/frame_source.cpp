@@ -6,33 +6,24 @@
 #include <filesystem>
 #include <memory>
 
+#include "elapsed.h"
+#include "frame_reducer.h"
 #include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/graph.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/sequence.h"
-#include "sgtllc/label/cloud_labeller.h"
 #include "sgtllc/parallel.h"
 
 namespace fs = std::filesystem;
 
 namespace sgtllc::pipeline {
-namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& config,
                                        const FrameSourceOptions& options) {
-  auto labeller = std::make_shared<const label::CloudLabeller>(config.labels, config.labeller);
-  const bool geometric = !labeller->readsLabelFiles();
+  auto reducer = std::make_shared<const FrameReducer>(config);
+  const bool geometric = !reducer->readsLabels();
   auto seq = std::make_shared<io::SequenceDir>(
       dir, io::SequenceLabels{!geometric, options.labels_dir, config.labels.format});
-  const LabelConfig& labels = labeller->nodeLabels();
-  auto extractor = std::make_shared<NodeExtractor>(config.cluster, labels, config.graph.max_nodes);
-  auto store = std::make_shared<CloudStore>(config.registration, labels);  // prepare() only
   FrameSource source;
   for (size_t i = 0; i < seq->size(); ++i) source.names_.push_back(seq->frameName(i));
   source.read_ = [seq, geometric](size_t i) {
@@ -43,22 +34,7 @@ FrameSource FrameSource::semanticKitti(const std::string& dir, const Config& con
     return cloud;
   };
   // The geometric labeller labels the cloud that is reduced: an accumulated frame is labelled once, merged.
-  source.reduce_ = [extractor, store, labeller, verification = config.verification](const LabeledCloud& input) {
-    LoadedFrame f;
-    auto start = std::chrono::steady_clock::now();
-    LabeledCloud labelled;
-    if (labeller->changesLabels()) labelled = labeller->apply(input);
-    const LabeledCloud& cloud = labeller->changesLabels() ? labelled : input;
-    NodeExtractionResult r = extractor->extract(cloud);
-    f.footprint = computeFootprint(cloud, extractor->labelMap(), verification);
-    f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
-    f.nodes = std::move(r.nodes);
-    f.stats = r.stats;
-    start = std::chrono::steady_clock::now();
-    f.clouds = store->prepare(cloud);
-    f.clouds_ms = msSince(start);
-    return f;
-  };
+  source.reduce_ = [reducer](const LabeledCloud& input) { return reducer->reduce(input); };
   source.loader_ = [read = source.read_, reduce = source.reduce_](size_t i) {
     const auto start = std::chrono::steady_clock::now();
     const LabeledCloud cloud = read(i);

@@ -1,16 +1,17 @@
-#include "false_loops.h"
+#include "sgtllc/eval/false_loops.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sgtllc/sim/rng.h"
 
-namespace sgtllc::cli {
+namespace sgtllc::eval {
 
-std::vector<ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odometry,
-                                    const std::vector<ClosingLoop>& real, double fraction, uint64_t seed,
-                                    const std::vector<std::string>& frame_names, const backend::LoopNoise& noise,
-                                    double min_distance) {
-  std::vector<ClosingLoop> out;
+std::vector<pipeline::ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odometry,
+                                              const std::vector<pipeline::ClosingLoop>& real, double fraction,
+                                              uint64_t seed, const std::vector<std::string>& frame_names,
+                                              const backend::LoopNoise& noise, double min_distance) {
+  std::vector<pipeline::ClosingLoop> out;
   if (!(fraction > 0.0)) return out;
   const int count = std::max(1, static_cast<int>(std::lround(fraction * static_cast<double>(real.size()))));
   const int n = static_cast<int>(odometry.size());
@@ -19,13 +20,13 @@ std::vector<ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odomet
   constexpr int kAttemptsPerLoop = 10000;
   for (int attempt = 0; static_cast<int>(out.size()) < count; ++attempt) {
     if (attempt >= kAttemptsPerLoop * count || n < 2) {
-      throw Error("--add-false-loops: found no frame pair more than " + fixed(min_distance, 0) +
+      throw Error("false loops: found no frame pair more than " + std::to_string(std::lround(min_distance)) +
                   " m apart by the odometry in " + std::to_string(attempt) + " random draws");
     }
     int a = rng.uniformInt(0, n - 1), b = rng.uniformInt(0, n - 1);
     if (a > b) std::swap(a, b);
     if ((odometry[a].translation() - odometry[b].translation()).norm() <= min_distance) continue;
-    ClosingLoop l;
+    pipeline::ClosingLoop l;
     l.edge.from = a;
     l.edge.to = b;
     l.edge.kind = backend::EdgeKind::kLoop;
@@ -36,7 +37,7 @@ std::vector<ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odomet
     const double y = rng.uniform(-10.0, 10.0);
     const double x = rng.uniform(-10.0, 10.0);
     l.edge.T_from_to = Eigen::Translation3d(x, y, z) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
-    l.edge.information = real.empty() ? nominalLoopInformation(noise)
+    l.edge.information = real.empty() ? pipeline::nominalLoopInformation(noise)
                                       : real[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(real.size()) - 1))]
                                             .edge.information;
     l.query = frame_names.at(static_cast<size_t>(b));
@@ -47,4 +48,4 @@ std::vector<ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3d>& odomet
   return out;
 }
 
-}  // namespace sgtllc::cli
+}  // namespace sgtllc::eval

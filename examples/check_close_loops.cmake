@@ -1,0 +1,32 @@
+# examples/close_loops.cpp against `sgtllc run` on KITTI 00's 4,541 node files and KISS-ICP odometry: the two
+# corrected trajectories must be the same bytes (ctest: example_close_loops_matches_run).
+#   cmake -DSOURCE=... -DWORK=... -DEXAMPLE=... -DCLI=... -P check_close_loops.cmake
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(kitti ${SOURCE}/data/kitti/00)
+execute_process(COMMAND ${CMAKE_COMMAND} -E tar xJf ${kitti}/objects.tar.xz WORKING_DIRECTORY ${WORK}
+                RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "cannot unpack ${kitti}/objects.tar.xz (${status})")
+endif()
+set(nodes ${WORK}/objects)
+set(odometry ${kitti}/kissicp_00_kitti.txt)
+set(calib ${kitti}/calib.txt)
+set(config ${SOURCE}/configs/kitti00-objects.yaml)
+set(example_command ${EXAMPLE} ${nodes} ${odometry} ${calib} ${config} ${WORK}/example.txt)
+set(run_command ${CLI} run --nodes ${nodes} --odometry ${odometry} --calib ${calib} --config ${config} --threads 2
+                --quiet --out-trajectory ${WORK}/run.txt)
+foreach(step example run)
+  execute_process(COMMAND ${${step}_command} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${step} failed (${status}):\n${out}\n${err}")
+  endif()
+  string(REGEX MATCH "[0-9]+ loops, [0-9]+ accepted" summary "${out}")
+  message("${step}: ${summary}")
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/example.txt ${WORK}/run.txt RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "the example's corrected trajectory differs from `sgtllc run`'s")
+endif()
+message("corrected trajectories identical")
+file(REMOVE_RECURSE ${WORK}/objects)
