@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/eval/sequence_eval.h"
 
 namespace fs = std::filesystem;
@@ -15,7 +14,7 @@ void addAccumulateOption(CLI::App& cmd, int& scans) {
                  "merge each scan with the N-1 scans before it, moved into its frame by the --odometry poses (or "
                  "SEQ_DIR/poses.txt through calib.txt), before node extraction: for narrow sensors such as the "
                  "Livox Mid-70 (configs/mcd.yaml: 10). 1 = off")
-      ->check(CLI::Range(1, ScanAccumulator::kMaxScans))
+      ->check(CLI::Range(1, pipeline::kMaxAccumulatedScans))
       ->capture_default_str();
 }
 

@@ -26,7 +26,7 @@ void applyAccumulation(pipeline::FrameSource& source, int scans, const Odometry*
 /// What accumulation cost over a run: merge time per frame and the largest buffer.
 struct AccumulationCost {
   std::vector<double> ms;   ///< per frame
-  size_t max_bytes = 0;     ///< ScanAccumulator::bytes, largest over the run
+  size_t max_bytes = 0;     ///< LoadedFrame::buffer_bytes, largest over the run
 
   void add(const pipeline::LoadedFrame& frame);
   Json json(int scans) const;

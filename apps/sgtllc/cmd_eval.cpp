@@ -234,7 +234,7 @@ void runEval(const EvalCliOptions& o) {
     folder_pairs.finish(run, truth, config, options, extra);
     if (back.odometry) {
       back.finish(run, truth, config);
-      writeClosingOutputs(o.outputs, *back.odometry, back.loops, back.closing, config.backend, o.force);
+      writeClosingOutputs(o.outputs, *back.odometry, back.loops, back.closing, config, o.force);
       extra.section = back.section();
       extra.metrics = back.json();
     }

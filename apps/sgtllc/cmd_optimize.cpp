@@ -103,7 +103,7 @@ void runOptimize(const OptimizeOptions& o) {
   }
 
   const Closing closing = pipeline::closeLoopsBatch(odometry.poses, loops, config.backend);
-  writeClosingOutputs(o.outputs, odometry, loops, closing, config.backend, o.force);
+  writeClosingOutputs(o.outputs, odometry, loops, closing, config, o.force);
 
   Json out = {{"odometry", o.odometry}, {"frames", names.size()}, {"loops_read", real},
               {"backend", closingJson(loops, closing)}};

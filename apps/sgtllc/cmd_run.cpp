@@ -144,7 +144,7 @@ void runSequence(const RunOptions& o) {
   const Closing* closing = nullptr;
   if (odometry) {
     closing = &closer.finish();
-    writeClosingOutputs(o.outputs, *odometry, closer.loops(), *closing, config.backend, o.force);
+    writeClosingOutputs(o.outputs, *odometry, closer.loops(), *closing, config, o.force);
     poses_from = "the corrected trajectory of " + odometry->path;
   }
   if (!o.out.empty()) writeOutput(o.out, io::loopsCsvText(loops, true), o.force);

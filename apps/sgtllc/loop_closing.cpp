@@ -81,21 +81,21 @@ void checkClosingOutputs(const ClosingOutputs& o, bool force) {
   }
 }
 
-std::string onlineUpdateLine(const backend::BackendResult& r, double ms) {
-  const backend::LoopReport& last = r.loops.back();
-  return std::string("  back end: ") + backend::loopDecisionName(last.decision) + " (consistent with " +
+std::string onlineUpdateLine(const pipeline::BackendResult& r, double ms) {
+  const pipeline::LoopReport& last = r.loops.back();
+  return std::string("  back end: ") + pipeline::loopDecisionName(last.decision) + " (consistent with " +
          std::to_string(last.consistent_with) + " other loops, chi2 " + fixed(last.chi2, 2) + "); " +
          std::to_string(r.num_accepted) + " accepted, " + std::to_string(r.num_rejected) + " rejected so far; " +
          std::to_string(r.iterations) + " iterations, " + fixed(ms, 1) + " ms\n";
 }
 
 void writeClosingOutputs(const ClosingOutputs& o, const Odometry& odometry, const std::vector<ClosingLoop>& loops,
-                         const Closing& closing, const backend::BackendConfig& config, bool force) {
+                         const Closing& closing, const Config& config, bool force) {
   if (!o.trajectory.empty()) {
     io::writeTrajectory(o.trajectory, io::withPoses(odometry.trajectory, closing.poses), io::overwriteIf(force));
   }
   if (!o.graph.empty()) {
-    io::writeG2o(o.graph, pipeline::correctedGraph(odometry.poses, loops, closing, config), io::overwriteIf(force));
+    io::writeG2o(o.graph, pipeline::correctedGraph(odometry.poses, loops, closing, config.backend), io::overwriteIf(force));
   }
   if (!o.loops.empty()) writeOutput(o.loops, pipeline::loopListG2o(loops, closing), force);
 }
@@ -104,10 +104,10 @@ Json closingJson(const std::vector<ClosingLoop>& loops, const Closing& closing) 
   const pipeline::ClosingCounts c = pipeline::countLoops(loops, closing.result);
   Json list = Json::array();
   for (size_t k = 0; k < loops.size(); ++k) {
-    const backend::LoopReport& r = closing.result.loops[k];
+    const pipeline::LoopReport& r = closing.result.loops[k];
     list.push_back({{"query", loops[k].query},
                     {"match", loops[k].match},
-                    {"decision", backend::loopDecisionName(r.decision)},
+                    {"decision", pipeline::loopDecisionName(r.decision)},
                     {"consistent_with", r.consistent_with},
                     {"chi2", r.chi2},
                     {"injected", loops[k].injected}});

@@ -56,13 +56,13 @@ void addClosingOutputOptions(CLI::App& cmd, ClosingOutputs& outputs);
 void checkClosingOutputs(const ClosingOutputs& outputs, bool force);
 
 /// One line on a loop's decision after an online update.
-std::string onlineUpdateLine(const backend::BackendResult& r, double ms);
+std::string onlineUpdateLine(const pipeline::BackendResult& r, double ms);
 
 /// Writes the outputs that are set. The g2o graph holds the corrected poses, the odometry edges and the accepted
 /// loops; the loop list every loop, each rejected or injected one after a `# ` comment saying so.
 void writeClosingOutputs(const ClosingOutputs& outputs, const Odometry& odometry,
                          const std::vector<ClosingLoop>& loops, const Closing& closing,
-                         const backend::BackendConfig& config, bool force);
+                         const Config& config, bool force);
 
 /// Summary: loops / accepted / rejected by reason (and of the injected ones), solves, iterations, time.
 Json closingJson(const std::vector<ClosingLoop>& loops, const Closing& closing);

@@ -102,7 +102,7 @@ void plotClosing(const std::string& path, const std::vector<Eigen::Isometry3d>& 
   }
   for (size_t k = 0; k < loops.size(); ++k) {
     data.loops.push_back({loops[k].edge.from, loops[k].edge.to,
-                          closing.result.loops.at(k).decision == backend::LoopDecision::kAccepted});
+                          closing.result.loops.at(k).decision == pipeline::LoopDecision::kAccepted});
   }
   eval::plotTrajectories(path, data);
 }

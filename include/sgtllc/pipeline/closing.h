@@ -12,6 +12,12 @@
 
 namespace sgtllc::pipeline {
 
+// The back end's verdicts are the pipeline's results too.
+using backend::BackendResult;
+using backend::LoopDecision;
+using backend::loopDecisionName;
+using backend::LoopReport;
+
 /// What the back end made of the loops.
 struct Closing {
   backend::BackendResult result;         ///< per-loop decisions (loops in the order given), solver statistics

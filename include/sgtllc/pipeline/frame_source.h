@@ -9,11 +9,15 @@
 
 #include <Eigen/Geometry>
 
+#include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/config.h"
 #include "sgtllc/detector.h"
 #include "sgtllc/node_extraction.h"
 
 namespace sgtllc::pipeline {
+
+/// Most scans FrameSource::accumulate and PipelineOptions::accumulate merge into one frame.
+constexpr int kMaxAccumulatedScans = ScanAccumulator::kMaxScans;
 
 /// One frame reduced to nodes, with what it cost.
 struct LoadedFrame {
@@ -58,7 +62,7 @@ class FrameSource {
 
   /// From now on frame i is raw scan i merged with the @p scans − 1 scans before it, moved into its frame by
   /// @p T_world_scan (one LiDAR-frame pose per frame; accumulate/scan_accumulator.h). Scans only: throws
-  /// sgtllc::Error for node files, a pose count other than size(), or @p scans outside 1..ScanAccumulator::kMaxScans.
+  /// sgtllc::Error for node files, a pose count other than size(), or @p scans outside 1..kMaxAccumulatedScans.
   void accumulate(int scans, std::vector<Eigen::Isometry3d> T_world_scan);
   /// Scans merged into each frame (1: none).
   int accumulated() const { return scans_; }
