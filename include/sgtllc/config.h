@@ -165,9 +165,8 @@ enum class RetrievalMethod {
 /// What a frame is stored and searched by.
 enum class RetrievalKey {
   /// Per class-pair histogram of node-centre distances (retrieval/distance_histogram.h) [default]. [deviation: the
-  /// paper's key is Des^G (algorithm §5); the max-pooled Des^G changes by a whole cell when one node appears or vanishes,
-  /// and missed 11 % of urban7's revisits among its 15 candidates (recall@15 0.888 → 0.985 with the histogram,
-  /// BENCHMARKS.md "Retrieval key")]
+  /// paper's key is Des^G (algorithm §5), which changes by a whole cell when one node appears or vanishes;
+  /// BENCHMARKS.md "Retrieval key"]
   kDistanceHistogram,
   kGlobalDescriptor,  ///< Des^G of DescriptorConfig::global_mode, as the paper and the authors' code
 };
@@ -177,10 +176,9 @@ struct RetrievalConfig {
   /// Bins per class pair of the distance histogram (key histogram). 30 bins over 60 m with seven classes:
   /// 840 floats (3,360 bytes) per stored frame [1, 100].
   int histogram_bins = 30;
-  /// Distances (m) the histogram covers; node pairs this far apart or farther do not vote (0, 1000]. [choice: 20 m
-  /// with 10 bins was enough with labels; from the scans alone, pairs up to 60 m in 2 m bins put a revisit driven
-  /// the other way among the 15 candidates far more often (label-free urban11 and h32s11 tuned, urban7 opposite
-  /// revisits 333 → 383 of 405; BENCHMARKS.md "Retrieval key")]
+  /// Distances (m) the histogram covers; node pairs this far apart or farther do not vote (0, 1000]. [choice: 60 m
+  /// rather than 20 puts a label-free revisit driven the other way among the candidates far more often;
+  /// BENCHMARKS.md "Retrieval key"]
   double histogram_range = 60.0;
   int num_candidates = 15;   ///< K: candidates retrieved per query (algorithm §5) [1, 1000]
   /// G: query q searches only frames with index ≤ q − G (algorithm §5 [CHOICE]) [1, 1000000]. A sequence of at most G
@@ -209,10 +207,8 @@ struct AssociationConfig {
   double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (algorithm §6) [-1, 1]
   double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (algorithm §6) (0, 1000000]
   /// σ_2: accept the best candidate node iff S ≥ σ_2 (algorithm §6). [0, 1] with score ratio; [0, C²] (the slot
-  /// count: 49 for the seven classes) with score count. [deviation: the paper's 0.3 left 1.1-1.5 % of the
-  /// simulator's listed loops with fewer than 3 associations, most of them revisits 2-3 m apart in the opposite
-  /// direction; RANSAC is what rejects wrong pairs. 0.2, tuned on urban11 / sub7 with ransac_sample_size 3:
-  /// pair-list F1max 0.992 -> 0.999 on both, no false loop added (BENCHMARKS.md "Association and RANSAC sample")]
+  /// count: 49 for the seven classes) with score count. [deviation: the paper's 0.3 starved opposite-direction
+  /// revisits of associations; RANSAC rejects the wrong pairs. BENCHMARKS.md "Association and RANSAC sample"]
   double sigma_2 = 0.2;
   NodeScore score = NodeScore::kRatio;  ///< node similarity form (algorithm §6)
   /// Sub-vector entries compared, by vertex: bit 0 = v_i, bit 1 = v_j, bit 2 = v_k (ablation: drop one). The
@@ -228,19 +224,15 @@ enum class ScoreFormula {
 };
 
 struct VerificationConfig {
-  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: the paper's 0.35 (and
-  /// |LA| ≥ 7 below) gave score 0 to 4.6 % of the true loops of the simulator's pair lists, most of them in
-  /// small graphs (suburban scenes, occlusion); the overlap score already divides by the larger graph's size,
-  /// so the gates only dropped true loops. Default 0, |LA| ≥ 3 and 3 RANSAC inliers (the fewest a rigid fit
-  /// needs): pair-list F1max 0.970 → 0.991 (urban11), 0.969 → 0.992 (sub7), no false loop added, see
-  /// BENCHMARKS.md ("Verification gates"). The paper's values: sigma_3 0.35, min_associations 7, min_inliers 5]
+  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: with the overlap score,
+  /// which already divides by the larger graph, the paper's gates (σ_3 0.35, |LA| ≥ 7, 5 inliers; configs/paper.yaml)
+  /// only dropped true loops in small graphs. BENCHMARKS.md "Verification gates"]
   double sigma_3 = 0.0;
   int min_associations = 3;       ///< ... or if |LA| is below this (algorithm §7.1) [1, kMaxGraphNodes]
   int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (algorithm §7.2) [1, 10000]
-  /// Node pairs drawn per hypothesis (algorithm §7.2) [3, 100]. [deviation: the paper's and code's 7; 3 is the
-  /// minimal sample, which is checked for distance consistency before the fit (src/ransac.cpp), so a wrong
-  /// candidate costs almost no SVDs: verification 0.65 -> 0.29 ms per frame on urban11 at σ_2 0.2, quality the
-  /// same or better (BENCHMARKS.md "Association and RANSAC sample")]
+  /// Node pairs drawn per hypothesis (algorithm §7.2) [3, 100]. [deviation: the paper's and code's 7; the minimal
+  /// 3, checked for distance consistency before the fit (src/ransac.cpp), is as good and faster. BENCHMARKS.md
+  /// "Association and RANSAC sample"]
   int ransac_sample_size = 3;
   bool sample_with_replacement = true;  ///< draw with replacement, as the authors' code (algorithm §7.2)
   double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (algorithm §7.2) (0, 10]
@@ -253,11 +245,9 @@ struct VerificationConfig {
   /// ~0.5 ms per candidate that passes the gates; at the inlier ratios of true loops (60–80 %, algorithm §11) ~50
   /// suffice]
   double ransac_confidence = 0.999;
-  /// score formula (algorithm §7.3). [deviation: the first choice was the paper's n_in / |LA|. Two scans 20–25 m
-  /// apart share a few objects; those few associate and agree, so n_in / |LA| is high although most of either
-  /// graph is unmatched, and such pairs were nearly all the false loops on simulated sequences. Dividing by the
-  /// larger graph's size keeps true revisits high and pushes partial overlaps down: EP 0.72 → 0.97 on the
-  /// 2,000-frame urban sequence, see BENCHMARKS.md ("Loop score")]
+  /// score formula (algorithm §7.3). [deviation: the paper's n_in / |LA| scores two scans that share a few objects
+  /// high although most of either graph is unmatched; dividing by the larger graph keeps revisits high and pushes
+  /// partial overlaps down. BENCHMARKS.md "Loop score"]
   ScoreFormula score_formula = ScoreFormula::kOverlap;
   /// false = no RANSAC (Table IV "w/o RANSAC"): score = score_c and the pose is fitted to all associations.
   bool use_ransac = true;
@@ -265,13 +255,10 @@ struct VerificationConfig {
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
   /// Largest tilt (°) between the up axes of a loop's two scans: RANSAC skips a hypothesis whose rotation turns z
-  /// by more (algorithm §7.2) [1, 180]; 180 = no check. The sensor's z must be near the vertical: a sensor pitched
-  /// by α on the vehicle turns z by up to 2α between passes driven opposite ways, so a mount pitched more than ~10°
-  /// wants 180 (or its scans turned into a z-up frame). A ground vehicle is upright at both visits (KITTI's
-  /// revisits differ by a few degrees at most); objects on flat ground all lie near one plane, which a rotation of
-  /// 180° about a horizontal axis maps onto a mirror image of itself: such an upside-down fit of a small graph was
-  /// urban11's one false loop with geometric labels. [deviation: the paper and the code fit any rotation;
-  /// BENCHMARKS.md "Upright check"]
+  /// by more (algorithm §7.2) [1, 180]; 180 = no check. A sensor pitched by α on the vehicle turns z by up to 2α
+  /// between passes driven opposite ways, so a mount pitched more than ~10° wants 180 (or its scans turned into a
+  /// z-up frame). [deviation: the paper and the code fit any rotation, including the upside-down mirror of objects
+  /// on flat ground. BENCHMARKS.md "Upright check"]
   double max_tilt_deg = 30.0;
   /// Guided matching (guided_matching.h, algorithm §7.2): after RANSAC, the nodes its pose pairs (mutual nearest
   /// same-class nodes closer than inlier_threshold) replace its inliers when they are more, and the pose is
@@ -285,9 +272,7 @@ struct VerificationConfig {
   /// score_formula overlap and use_ransac. [deviation: BENCHMARKS.md "Consistency path"]
   int consistency_pairs = 16;
   /// Weak evidence (algorithm §7.7): a loop verified by at most this many inliers must reach weak_min_footprint
-  /// instead of min_footprint_overlap; 0 = no such rule [0, 1000]. On the simulated 32-beam drives nearly every
-  /// false candidate beyond 20 m had 3 or 4 inliers and a footprint share of 0.5–0.65, true ones 0.65 and more.
-  /// [deviation: BENCHMARKS.md "Weak evidence"]
+  /// instead of min_footprint_overlap; 0 = no such rule [0, 1000]. [deviation: BENCHMARKS.md "Weak evidence"]
   int weak_inliers = 4;
   /// ... the footprint share such a loop, and every loop of the consistency path, needs (for the consistency
   /// path the check must also have run: both frames from scans, min_footprint_overlap > 0) [0, 1].
@@ -305,27 +290,22 @@ struct VerificationConfig {
   double lateral_distance = 3.0;
   /// Neighbour check of the top-1 (detector.h, Candidate::retrieved): when the chosen candidate is a loop, the
   /// database frames within ±neighbour_frames of it that retrieval did not return are verified too, and the top-1
-  /// is chosen again among all (select_margin). Consecutive frames of the old pass see nearly the same scene, so
-  /// the one nearest the query often scores within the margin yet ranks outside the K retrieved. 0 = off, as the
-  /// paper [0, 50]. [deviation: tuned on the urban11 and sub7 sequences, see BENCHMARKS.md ("Top-1 choice")]
+  /// is chosen again among all (select_margin); 0 = off, as the paper [0, 50]. [deviation: the old pass's frame
+  /// nearest the query often ranks just outside the K retrieved. BENCHMARKS.md "Top-1 choice"]
   int neighbour_frames = 2;
   /// Offset decay of score (verification.h, offsetWeight): a verified candidate whose estimated offset
   /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score is scaled down linearly to 0
-  /// at offset_decay_end (m) [0, 1000]. [deviation, for the pairwise EP. The highest-scoring wrong matches were
-  /// pairs just over 20 m apart whose pose was right (estimated 20.0 m for 20.1 m): two passes along the same
-  /// street share many objects, so the overlap score cannot tell them from a revisit, but their pose can. Tuned on
-  /// the urban11 and sub7 sequences: pairwise EP 0.939 → 0.994 and 0.980 → 0.996, see BENCHMARKS.md ("Offset
-  /// decay"). Matches closer than offset_decay_start, revisits and their 3–10 m neighbours, are not changed]
+  /// at offset_decay_end (m) [0, 1000]. [deviation: two passes along one street 20 m apart share many objects, so
+  /// only their pose tells them from a revisit. BENCHMARKS.md "Offset decay of the loop score"]
   double offset_decay_start = 10.0;
   /// ... and the offset at which score reaches 0 (m); 0 = no decay, as the paper [0, 1000], 0 or greater than
   /// offset_decay_start.
   double offset_decay_end = 20.0;
   /// Footprint check (footprint.h, algorithm §7.7): a verified candidate is rejected (Rejection::kFootprint) when,
   /// under its pose, fewer than this share of the query's structure cells land on or next to the match's (with at
-  /// least 20 cells compared); 0 = off, as the paper [0, 1]. Few nodes (a sparse sensor: 5–15 a frame) can agree
-  /// by chance between two places with similar objects; the walls and vegetation around them rarely do. Needs the
-  /// scans' points: frames given as nodes are not checked (a map file keeps its frames' footprints). [deviation:
-  /// BENCHMARKS.md "Footprint check"]
+  /// least 20 cells compared); 0 = off, as the paper [0, 1]. Needs the scans' points: frames given as nodes are not
+  /// checked (a map file keeps its frames' footprints). [deviation: few nodes can agree by chance between two
+  /// places; the walls around them rarely do. BENCHMARKS.md "Footprint check"]
   double min_footprint_overlap = 0.5;
   double footprint_cell = 0.5;     ///< side of a footprint cell (m) [0.2, 10]
   double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m) [5, 200]

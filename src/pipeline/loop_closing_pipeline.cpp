@@ -28,8 +28,8 @@ LoopClosingPipeline& LoopClosingPipeline::operator=(LoopClosingPipeline&&) noexc
 
 int LoopClosingPipeline::numFrames() const { return detector_.numFrames(); }
 
-PipelineFrame LoopClosingPipeline::addScan(const LabeledCloud& scan, const std::optional<Eigen::Isometry3d>& T_world_frame,
-                                           std::string name) {
+PipelineFrame LoopClosingPipeline::addScan(const LabeledCloud& scan,
+                                           const std::optional<Eigen::Isometry3d>& T_world_frame, std::string name) {
   if (reducer_->readsLabels() && scan.labels.size() != scan.points.size()) {
     throw Error("frame " + std::to_string(numFrames()) + ": " + std::to_string(scan.points.size()) + " points but " +
                 std::to_string(scan.labels.size()) +
