@@ -117,8 +117,8 @@ void localizeCommand(const LocalizeOptions& o) {
     }
     progress.update(index + 1, std::to_string(localized) + " localized");
   };
-  const std::vector<Hit> hits =
-      pipeline::localizeSequence(source, relocalizer, query_name, o.map, config.threads, trackingOption(o.track), on_hit);
+  const std::vector<Hit> hits = pipeline::localizeSequence(source, relocalizer, query_name, o.map, config.threads,
+                                                           trackingOption(o.track), on_hit);
   progress.finish();
   if (!o.out.empty()) writeOutput(o.out, hitsCsv(hits), o.force);
 

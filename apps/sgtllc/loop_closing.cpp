@@ -95,7 +95,8 @@ void writeClosingOutputs(const ClosingOutputs& o, const Odometry& odometry, cons
     io::writeTrajectory(o.trajectory, io::withPoses(odometry.trajectory, closing.poses), io::overwriteIf(force));
   }
   if (!o.graph.empty()) {
-    io::writeG2o(o.graph, pipeline::correctedGraph(odometry.poses, loops, closing, config.backend), io::overwriteIf(force));
+    io::writeG2o(o.graph, pipeline::correctedGraph(odometry.poses, loops, closing, config.backend),
+                 io::overwriteIf(force));
   }
   if (!o.loops.empty()) writeOutput(o.loops, pipeline::loopListG2o(loops, closing), force);
 }

@@ -224,9 +224,9 @@ enum class ScoreFormula {
 };
 
 struct VerificationConfig {
-  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: with the overlap score,
-  /// which already divides by the larger graph, the paper's gates (σ_3 0.35, |LA| ≥ 7, 5 inliers; configs/paper.yaml)
-  /// only dropped true loops in small graphs. BENCHMARKS.md "Verification gates"]
+  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: with the overlap
+  /// score, which already divides by the larger graph, the paper's gates (σ_3 0.35, |LA| ≥ 7, 5 inliers;
+  /// configs/paper.yaml) only dropped true loops in small graphs. BENCHMARKS.md "Verification gates"]
   double sigma_3 = 0.0;
   int min_associations = 3;       ///< ... or if |LA| is below this (algorithm §7.1) [1, kMaxGraphNodes]
   int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (algorithm §7.2) [1, 10000]

@@ -3,6 +3,7 @@
 ///        does (docs/backend.md, "Online"), and what came of each loop.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
