@@ -19,7 +19,7 @@ KITTI = data/kitti/00/velodyne
 KITTI00 = $(BUILD)/kitti00
 KITTI00_CONFIG = configs/kitti00-objects.yaml
 
-.PHONY: all deps configure build demo test bench test-sanitize test-tsan fuzz fuzz-long clean kitti00 kitti00-loops
+.PHONY: all deps configure build demo test test-core bench test-sanitize test-tsan fuzz fuzz-long clean kitti00 kitti00-loops
 
 all: build
 
@@ -83,6 +83,13 @@ bench: build
 	$(BUILD)/bench/sgtllc_bench
 	$(BUILD)/bench/sgtllc_bench_sim
 
+# The libraries as a project without Ceres, Cairo, FAISS or Python builds them (the core, io, label, map), with the
+# test suites that need nothing more: the back end, pipeline, tool, module and benchmarks are left out.
+test-core:
+	@$(MAKE) --no-print-directory build BUILD=build-core \
+	  CMAKE_FLAGS="-DSGTLLC_WITH_BACKEND=OFF -DSGTLLC_WITH_FAISS=OFF $(CMAKE_FLAGS)"
+	cd build-core && ctest --output-on-failure -j $(JOBS)
+
 # ASan + UBSan over the whole suite (the tests run the instrumented command-line tool too).
 test-sanitize:
 	@$(MAKE) --no-print-directory build BUILD=build-asan DEPS_FLAGS=--dev \
@@ -108,4 +115,4 @@ fuzz-long:
 	@$(MAKE) --no-print-directory fuzz FUZZ_SECONDS=$(FUZZ_LONG_SECONDS)
 
 clean:
-	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-tsan build-fuzz build-*.configure.log
+	rm -rf $(BUILD) $(BUILD).configure.log build-core build-asan build-tsan build-fuzz build-*.configure.log

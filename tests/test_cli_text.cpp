@@ -11,6 +11,7 @@
 #include "sgtllc/io/csv.h"
 #include "sgtllc/io/loops_csv.h"
 #include "test_cli_support.h"
+#include "test_node_files_support.h"
 #include "test_support.h"
 
 namespace sgtllc {

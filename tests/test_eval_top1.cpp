@@ -11,6 +11,7 @@
 
 #include "sgtllc/eval/pair_eval.h"
 #include "sgtllc/eval/report.h"
+#include "sgtllc/pipeline/frame_source.h"
 #include "test_cli_support.h"
 #include "test_support.h"
 

@@ -11,7 +11,6 @@
 
 #include <Eigen/Geometry>
 
-#include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/io/kitti.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/types.h"
@@ -70,14 +69,6 @@ inline PoseError poseError(const Eigen::Matrix4d& estimate, const Eigen::Matrix4
   const Eigen::Matrix3d dR = estimate.topLeftCorner<3, 3>().transpose() * reference.topLeftCorner<3, 3>();
   const double c = std::clamp((dR.trace() - 1.0) / 2.0, -1.0, 1.0);
   return {(estimate.topRightCorner<3, 1>() - reference.topRightCorner<3, 1>()).norm(), std::acos(c) * 180.0 / M_PI};
-}
-
-/// Writes every frame of @p source as a node file DIR/NAME.txt (what a user with their own object extraction gives).
-inline void writeNodeFiles(const pipeline::FrameSource& source, const std::string& dir) {
-  std::filesystem::create_directories(dir);
-  for (size_t i = 0; i < source.size(); ++i) {
-    io::writeNodesTxt(dir + "/" + source.name(i) + ".txt", source.load(i).nodes);
-  }
 }
 
 /// Writes a SemanticKITTI-layout sequence of 54 frames into @p dir: the real scans 52 and 88, 50 frames
