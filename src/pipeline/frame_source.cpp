@@ -8,6 +8,7 @@
 
 #include "elapsed.h"
 #include "frame_reducer.h"
+#include "process_frame.h"
 #include "sgtllc/accumulate/scan_accumulator.h"
 #include "sgtllc/graph.h"
 #include "sgtllc/io/nodes.h"
@@ -184,10 +185,7 @@ void streamFrames(const FrameSource& source, int threads, const std::function<vo
 void streamSequence(const FrameSource& source, LoopDetector& detector, int threads,
                     const std::function<void(size_t, const LoadedFrame&, const FrameResult&)>& on_frame) {
   streamFrames(source, threads, [&](size_t index, LoadedFrame& frame) {
-    FrameResult r = detector.process(std::move(frame.nodes), std::move(frame.clouds), std::move(frame.footprint));
-    r.timing.extraction_ms = frame.extraction_ms;
-    r.timing.refinement_ms += frame.clouds_ms;
-    r.extraction = frame.stats;
+    const FrameResult r = processFrame(detector, frame);
     on_frame(index, frame, r);
   });
 }

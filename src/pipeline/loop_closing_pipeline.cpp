@@ -6,6 +6,7 @@
 
 #include "elapsed.h"
 #include "frame_reducer.h"
+#include "process_frame.h"
 #include "sgtllc/accumulate/scan_accumulator.h"
 
 namespace sgtllc::pipeline {
@@ -30,16 +31,16 @@ int LoopClosingPipeline::numFrames() const { return detector_.numFrames(); }
 
 PipelineFrame LoopClosingPipeline::addScan(const LabeledCloud& scan,
                                            const std::optional<Eigen::Isometry3d>& T_world_frame, std::string name) {
-  if (reducer_->readsLabels() && scan.labels.size() != scan.points.size()) {
+  const bool unpaired = scan.labels.size() != scan.points.size();
+  if (unpaired && reducer_->readsLabels()) {
     throw Error("frame " + std::to_string(numFrames()) + ": " + std::to_string(scan.points.size()) + " points but " +
                 std::to_string(scan.labels.size()) +
                 " labels (a label per point is needed unless labeller.source is geometric)");
   }
-  const bool placeholders = !reducer_->readsLabels() && scan.labels.size() != scan.points.size();
-  if (!accumulator_ && !placeholders) return addFrame(reducer_->reduce(scan), T_world_frame, std::move(name));
+  if (!accumulator_ && !unpaired) return addFrame(reducer_->reduce(scan), T_world_frame, std::move(name));
   LabeledCloud copy = scan;
   // The geometric labeller replaces the labels; placeholders keep points and labels paired until it does.
-  if (placeholders) copy.labels.assign(copy.points.size(), 0);
+  if (unpaired) copy.labels.assign(copy.points.size(), 0);
   if (!accumulator_) return addFrame(reducer_->reduce(copy), T_world_frame, std::move(name));
   if (!T_world_frame) {
     throw Error("frame " + std::to_string(numFrames()) + ": accumulating scans needs each scan's pose");
@@ -89,10 +90,7 @@ PipelineFrame LoopClosingPipeline::addFrame(LoadedFrame frame, const std::option
   PipelineFrame out;
   out.index = numFrames();
   // A frame the detector refuses (too many nodes, a bad centre) is not stored, and its pose is not kept either.
-  out.detection = detector_.process(std::move(frame.nodes), std::move(frame.clouds), std::move(frame.footprint));
-  out.detection.timing.extraction_ms = frame.extraction_ms;
-  out.detection.timing.refinement_ms += frame.clouds_ms;
-  out.detection.extraction = frame.stats;
+  out.detection = processFrame(detector_, frame);
   if (T_world_frame) addPose(*T_world_frame);
   if (name.empty()) {
     char text[16];
