@@ -25,6 +25,11 @@ constexpr double kScattered = 0.15;
 /// How far above the pole slice (m) the points around a pole axis still count as pole: the trunk's top below
 /// the crown, not the crown.
 constexpr double kPoleAboveSlice = 0.5;
+/// The pole slice is searched twice, the second time this much higher (m): the foot of a trunk standing in a bush
+/// or a hedge joins the bush in the first slice, and a trunk seen near the sensor ends where the view does
+/// (~2 m above the ground at 5 m for a 64-beam sensor), so the first slice cannot simply reach higher
+/// (docs/labeller.md §4, "Trunks in bushes"; BENCHMARKS.md, "Geometric labeller").
+constexpr double kUpperSliceLift = 0.5;
 /// A pole is seen whole if, within kBeside m beside each side of it, at most pole_max_occluded of the points lie
 /// more than kNearer m nearer the sensor (docs/labeller.md §4, "Seen whole").
 constexpr double kBeside = 0.6;
@@ -91,61 +96,93 @@ std::vector<std::vector<int>> membersOf(const std::vector<int>& point_voxel, con
 /// against the points flagged in @p seen (none: every thin component is) is a pole section, and every point of
 /// its segment within pole_radius of its axis, up to kPoleAboveSlice above the slice, becomes kPole.
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole
-/// landmarks extracted from 3-D lidar scans", ECMR 2019 (docs/labeller.md §4).
+/// landmarks extracted from 3-D lidar scans", ECMR 2019 (docs/labeller.md §4). The slice is searched twice, the
+/// second time kUpperSliceLift higher; both searches work on the points of the slices only, and their candidates
+/// are tested for being seen whole together (BENCHMARKS.md, "Geometric labeller").
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
                const std::vector<uint8_t>* seen, const SegmentRuleConfig& r, Labelling* out) {
   const size_t n = points.size();
-  std::vector<uint8_t> in_slice(n, 0);
+  constexpr int kSlices = 2;
+  const float low[kSlices] = {static_cast<float>(r.pole_slice_low),
+                              static_cast<float>(r.pole_slice_low + kUpperSliceLift)};
+  const float high[kSlices] = {static_cast<float>(r.pole_slice_high),
+                               static_cast<float>(r.pole_slice_high + kUpperSliceLift)};
+  // The points of either slice, in scan order.
+  std::vector<int> index;
   for (size_t i = 0; i < n; ++i) {
-    in_slice[i] = out->segment[i] >= 0 && height[i] >= r.pole_slice_low && height[i] <= r.pole_slice_high;
+    if (out->segment[i] >= 0 && height[i] >= low[0] && height[i] <= high[kSlices - 1]) {
+      index.push_back(static_cast<int>(i));
+    }
   }
-  const Segmentation slice = segmentVoxels(points, in_slice, r.pole_voxel);
-  std::vector<Moments> parts(static_cast<size_t>(slice.num_segments));
-  std::vector<float> low(parts.size(), std::numeric_limits<float>::infinity());
-  std::vector<float> high(parts.size(), -std::numeric_limits<float>::infinity());
-  for (size_t i = 0; i < n; ++i) {
-    const int v = slice.point_voxel[i];
-    if (v < 0) continue;
-    const int k = slice.voxel_segment[v];
-    parts[k].add(points[i]);
-    low[k] = std::min(low[k], height[i]);
-    high[k] = std::max(high[k], height[i]);
-  }
-  // Axis (x, y) and owning segment of each pole section.
-  struct Axis {
-    Eigen::Vector2d xy;
-    int segment;
+  std::vector<Eigen::Vector3f> slice_points(index.size());
+  for (size_t j = 0; j < index.size(); ++j) slice_points[j] = points[index[j]];
+
+  // Each slice's components; a component is a part, numbered across the slices.
+  struct Part {
+    Moments moments;
+    float low = std::numeric_limits<float>::infinity();
+    float high = -std::numeric_limits<float>::infinity();
+    int slice = 0;
   };
-  std::vector<Axis> axes;
-  std::vector<int> part_axis(parts.size(), -1);
+  std::vector<Part> parts;
+  std::vector<int> slice_part(static_cast<size_t>(kSlices) * index.size(), -1);  // [slice][j]
+  std::vector<uint8_t> in_slice(index.size());
+  for (int k = 0; k < kSlices; ++k) {
+    for (size_t j = 0; j < index.size(); ++j) {
+      const float h = height[index[j]];
+      in_slice[j] = h >= low[k] && h <= high[k];
+    }
+    const Segmentation slice = segmentVoxels(slice_points, in_slice, r.pole_voxel);
+    const size_t first = parts.size();
+    parts.resize(first + static_cast<size_t>(slice.num_segments));
+    for (size_t j = 0; j < index.size(); ++j) {
+      const int v = slice.point_voxel[j];
+      if (v < 0) continue;
+      const int id = static_cast<int>(first) + slice.voxel_segment[v];
+      slice_part[k * index.size() + j] = id;
+      Part& part = parts[static_cast<size_t>(id)];
+      part.slice = k;
+      part.moments.add(slice_points[j]);
+      part.low = std::min(part.low, height[index[j]]);
+      part.high = std::max(part.high, height[index[j]]);
+    }
+  }
+  // Thin parts are candidates; those seen whole are pole sections, each with its axis and owning segment.
   std::vector<uint8_t> thin(parts.size(), 0);
   for (size_t k = 0; k < parts.size(); ++k) {
-    thin[k] = parts[k].count() >= r.min_points && high[k] - low[k] >= r.pole_min_span &&
-              horizontalExtent(parts[k].covariance()).first <= r.pole_max_width;
+    const Part& part = parts[k];
+    thin[k] = part.moments.count() >= r.min_points && part.high - part.low >= r.pole_min_span &&
+              horizontalExtent(part.moments.covariance()).first <= r.pole_max_width;
+  }
+  std::vector<std::vector<int>> candidates(parts.size());  // the thin parts' points, in scan order
+  for (size_t at = 0; at < slice_part.size(); ++at) {
+    const int id = slice_part[at];
+    if (id >= 0 && thin[id]) candidates[id].push_back(index[at % index.size()]);
   }
   const std::vector<double> occluded =
-      seen ? occludedSides(points, *seen, membersOf(slice.point_voxel, slice.voxel_segment, thin), kBeside, kNearer)
-           : std::vector<double>(parts.size(), 0.0);
+      seen ? occludedSides(points, *seen, candidates, kBeside, kNearer) : std::vector<double>(parts.size(), 0.0);
+  struct Axis {
+    Eigen::Vector2d xy;
+    float top;  // the highest height (above the ground) that still counts as pole
+  };
+  std::vector<std::vector<Axis>> segment_axes(static_cast<size_t>(out->segments));
+  bool any = false;
   for (size_t k = 0; k < parts.size(); ++k) {
-    if (!thin[k] || occluded[k] > r.pole_max_occluded) continue;
-    part_axis[k] = static_cast<int>(axes.size());
-    axes.push_back({parts[k].mean().head<2>(), -1});
+    if (candidates[k].empty() || occluded[k] > r.pole_max_occluded) continue;
+    // The segment of its last point: a slice component nearly always lies within one.
+    const int segment = out->segment[candidates[k].back()];
+    segment_axes[segment].push_back(
+        {parts[k].moments.mean().head<2>(), high[parts[k].slice] + static_cast<float>(kPoleAboveSlice)});
+    any = true;
   }
-  if (axes.empty()) return;
-  for (size_t i = 0; i < n; ++i) {
-    const int v = slice.point_voxel[i];
-    if (v >= 0 && part_axis[slice.voxel_segment[v]] >= 0) axes[part_axis[slice.voxel_segment[v]]].segment = out->segment[i];
-  }
-  // Each segment's pole axes; a point is tested only against those of its own segment.
-  std::vector<std::vector<int>> segment_axes(static_cast<size_t>(out->segments));
-  for (size_t a = 0; a < axes.size(); ++a) segment_axes[axes[a].segment].push_back(static_cast<int>(a));
+  if (!any) return;
+  // A point is tested only against the axes of its own segment.
   const double r2 = r.pole_radius * r.pole_radius;
-  const float top = static_cast<float>(r.pole_slice_high + kPoleAboveSlice);
   for (size_t i = 0; i < n; ++i) {
     const int s = out->segment[i];
-    if (s < 0 || segment_axes[s].empty() || height[i] > top) continue;
-    for (int a : segment_axes[s]) {
-      if ((points[i].head<2>().cast<double>() - axes[a].xy).squaredNorm() <= r2) {
+    if (s < 0 || segment_axes[s].empty()) continue;
+    for (const Axis& axis : segment_axes[s]) {
+      if (height[i] <= axis.top && (points[i].head<2>().cast<double>() - axis.xy).squaredNorm() <= r2) {
         out->classes[i] = kPole;
         break;
       }
