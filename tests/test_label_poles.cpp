@@ -1,12 +1,17 @@
-// Poles and trunks inside larger segments (docs/labeller.md §4, "Trunks in bushes"): a trunk standing in a bush is
-// found by the slice searched higher, on a synthetic scene and on two real trunks of KITTI 00 scan 88.
+// Poles and trunks (docs/labeller.md §4): a trunk standing in a bush is found by the slice searched higher, on a
+// synthetic scene and on two real trunks of KITTI 00 scan 88 ("Trunks in bushes"); the top of the view against an
+// exact quantile; a thin upright no taller than a person is not a pole unless the view cuts it, on synthetic
+// scenes and on the people of KITTI 00 scan 850 ("Standing taller than a person").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include "sgtllc/label/geometric_labeller.h"
+#include "sgtllc/label/view_ceiling.h"
 #include "sgtllc/labels.h"
 #include "test_support.h"
 
@@ -112,6 +117,83 @@ TEST(PoleSlices, RealTrunksInBushesOfKitti00) {
     EXPECT_EQ(trunk, expected_trunk[t]);
     EXPECT_EQ(pole, expected_pole[t]);
   }
+}
+
+
+TEST(ViewCeiling, AQuantileOfTheSlopesAboveTheSensor) {
+  // 9,990 points below the sensor, 1,000 above it with slopes 0.001 … 1.000 and 10 strays at slope 2: the share
+  // 0.001 of the 11,000 points leaves 11 slopes above the answer (the 10 strays and 1.000), so it is 0.999.
+  std::vector<Eigen::Vector3f> points;
+  for (int k = 0; k < 9990; ++k) points.emplace_back(10.0f, 0.0f, -1.0f);
+  for (int k = 1; k <= 1000; ++k) points.emplace_back(0.0f, -5.0f, 5.0f * 0.001f * static_cast<float>(k));
+  for (int k = 0; k < 10; ++k) points.emplace_back(3.0f, 4.0f, 10.0f);
+  std::vector<uint8_t> use(points.size(), 1);
+  EXPECT_FLOAT_EQ(label::viewCeiling(points, use, 0.001), 0.999f);
+  // Points not flagged count for nothing: without the 9,990 below, the share of 1,010 points is 1 slope above the
+  // answer, which is then a stray.
+  std::fill(use.begin(), use.begin() + 9990, 0);
+  EXPECT_FLOAT_EQ(label::viewCeiling(points, use, 0.001), 2.0f);
+  // Nothing above the sensor, or fewer points above it than the share: +inf (nothing reaches the top).
+  const std::vector<Eigen::Vector3f> low(100, Eigen::Vector3f(5.0f, 0.0f, -1.0f));
+  EXPECT_EQ(label::viewCeiling(low, std::vector<uint8_t>(100, 1), 0.001), std::numeric_limits<float>::infinity());
+}
+
+/// Flat ground, a wall 20 m away whose top is at slope 0.08 (about 4.6°, the top of the view: nothing in this
+/// scene is higher, as on KITTI's scans), and a thin upright post of radius 0.2 m at (@p x, 0) from the ground to
+/// @p top above it.
+TrunkScene postBeforeAWall(float x, float top) {
+  TrunkScene s = trunkInBush(false, 0.0f);  // the ground alone
+  for (float y = -10.0f; y <= 10.0f; y += 0.05f) {
+    for (float h = 0.1f; h <= 1.73f + 20.0f * 0.08f; h += 0.05f) {
+      s.points.emplace_back(20.0f, y, kGroundZ + h);
+      s.trunk.push_back(0);
+    }
+  }
+  for (float h = 0.05f; h <= top + 1e-4f; h += 0.05f) {
+    for (int k = 0; k < 12; ++k) {
+      const float a = static_cast<float>(k) * static_cast<float>(M_PI) / 6.0f;
+      s.points.emplace_back(x + 0.2f * std::cos(a), 0.2f * std::sin(a), kGroundZ + h);
+      s.trunk.push_back(1);
+    }
+  }
+  return s;
+}
+
+TEST(PoleSlices, AThinUprightMustStandTallerThanAPersonOrReachTheViewsTop) {
+  const label::GeometricLabeller labeller;
+  const auto found = [&](float x, float top) {
+    const TrunkScene s = postBeforeAWall(x, top);
+    return trunkFound(s, labeller.classify(s.points), 0.25f, top);
+  };
+  // The top counts from 2° (a slope of 0.035) below the view's: 10 m away from 1.73 + 10 · 0.045 = 2.18 m. A
+  // 1.9 m upright (a person's height) ends below it, is seen whole and is no pole; one 2.5 m tall is a pole.
+  EXPECT_DOUBLE_EQ(found(10.0f, 1.9f), 0.0);
+  EXPECT_DOUBLE_EQ(found(10.0f, 2.5f), 1.0);
+  // 3 m away the top counts from 1.73 + 3 · 0.045 = 1.87 m: an upright seen up to 1.9 m may be taller than what is
+  // seen, and is a pole.
+  EXPECT_DOUBLE_EQ(found(3.0f, 1.9f), 1.0);
+}
+
+TEST(PoleSlices, PeopleOfKitti00AreNotPoles) {
+  // KITTI 00 scan 850 (held out): a moving person, 116 points of the ground truth, was 106 points of pole before a
+  // pole had to stand taller than a person; now none. The 526 pole points left are 476 pole, 26 trunk and 20
+  // traffic-sign of the ground truth.
+  const LabeledCloud truth = test::kittiScan("000850");
+  const label::Labelling l = label::GeometricLabeller().classify(truth.points);
+  int person = 0, person_pole = 0, pole = 0, right = 0;
+  for (size_t i = 0; i < truth.points.size(); ++i) {
+    const uint32_t id = truth.labels[i] & 0xFFFF;
+    const bool is_person = id == 30 || id == 254;  // person, moving person
+    person += is_person;
+    if (l.classes[i] != kPole) continue;
+    ++pole;
+    person_pole += is_person;
+    right += id == 71 || id == 80 || id == 81;
+  }
+  EXPECT_EQ(person, 135);
+  EXPECT_EQ(person_pole, 0);
+  EXPECT_EQ(pole, 526);
+  EXPECT_EQ(right, 522);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Eigenvalue shape features (docs/labeller.md §3).
 #include "sgtllc/label/shape_features.h"
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
 namespace sgtllc::label {
@@ -45,6 +47,14 @@ ShapeFeatures shapeFeatures(const Eigen::Matrix3d& covariance) {
   f.axis_verticality = std::abs(solver.eigenvectors()(2, 2));
   f.normal_verticality = std::abs(solver.eigenvectors()(2, 0));
   return f;
+}
+
+std::pair<double, double> horizontalExtent(const Eigen::Matrix3d& covariance) {
+  const Eigen::Matrix2d c = covariance.topLeftCorner<2, 2>();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
+  solver.computeDirect(c);
+  const Eigen::Vector2d ev = solver.eigenvalues().cwiseMax(0.0);
+  return {4.0 * std::sqrt(ev(1)), 4.0 * std::sqrt(ev(0))};
 }
 
 }  // namespace sgtllc::label

@@ -5,6 +5,8 @@
 ///        docs/labeller.md §3).
 #pragma once
 
+#include <utility>
+
 #include <Eigen/Core>
 
 namespace sgtllc::label {
@@ -59,5 +61,9 @@ struct ShapeFeatures {
 
 /// Features of a covariance. A zero covariance (one point, or all points in one place) has all features 0.
 ShapeFeatures shapeFeatures(const Eigen::Matrix3d& covariance);
+
+/// 4 standard deviations of a covariance's horizontal (x, y) spread along its major and its minor axis (m): the
+/// length and width of a uniform bar, whatever its heading.
+std::pair<double, double> horizontalExtent(const Eigen::Matrix3d& covariance);
 
 }  // namespace sgtllc::label
