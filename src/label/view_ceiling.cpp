@@ -1,5 +1,5 @@
 // The top of the sensor's view (view_ceiling.h): a high quantile of the elevation slopes of the points above the
-// sensor, found with nth_element on the few points (a tenth or less of a scan) that lie above it.
+// sensor, found with nth_element on the points that lie above it (about a sixth of a KITTI scan).
 #include "sgtllc/label/view_ceiling.h"
 
 #include <algorithm>

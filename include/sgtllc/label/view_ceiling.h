@@ -1,7 +1,7 @@
 /// @file view_ceiling.h
 /// @brief Where the sensor's view ends upwards (docs/labeller.md §4, "Standing taller than a person"). Near the
-///        sensor the view ends low — a 64-beam sensor 1.73 m up with about +2° of upward view sees up to ~2 m above
-///        the ground at 5 m — so an object's highest point there is where the view ends, not where the object does.
+///        sensor the view ends low (KITTI's 64-beam sensor, 1.73 m up, sees 2–4° above the horizontal: up to
+///        about 2 m above the ground at 5 m), so an object's highest point there is where the view ends.
 #pragma once
 
 #include <cstdint>
