@@ -133,7 +133,9 @@ Labelling GeometricLabeller::classify(const std::vector<Eigen::Vector3f>& points
     out.segment[i] = seg.voxel_segment[v];
     out.classes[i] = segment_class[seg.voxel_segment[v]];
   }
-  markPoles(points, ground.height, seen_whole ? &use : nullptr, view_top, rules, &out);
+  std::vector<uint8_t> standing(segments.size());
+  for (size_t k = 0; k < segments.size(); ++k) standing[k] = segments[k].standing();
+  markPoles(points, ground.height, seen_whole ? &use : nullptr, view_top, standing, rules, &out);
   out.ground = std::move(ground.ground);
   return out;
 }

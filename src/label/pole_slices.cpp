@@ -26,17 +26,19 @@ constexpr double kUpperSliceLift = 0.5;
 }  // namespace
 
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
-               const std::vector<uint8_t>* seen, float view_top, const SegmentRuleConfig& r, Labelling* out) {
+               const std::vector<uint8_t>* seen, float view_top, const std::vector<uint8_t>& standing,
+               const SegmentRuleConfig& r, Labelling* out) {
   const size_t n = points.size();
   constexpr int kSlices = 2;
   const float low[kSlices] = {static_cast<float>(r.pole_slice_low),
                               static_cast<float>(r.pole_slice_low + kUpperSliceLift)};
   const float high[kSlices] = {static_cast<float>(r.pole_slice_high),
                                static_cast<float>(r.pole_slice_high + kUpperSliceLift)};
-  // The points of either slice, in scan order.
+  // The points of either slice, in scan order, in segments that stand.
   std::vector<int> index;
   for (size_t i = 0; i < n; ++i) {
-    if (out->segment[i] >= 0 && height[i] >= low[0] && height[i] <= high[kSlices - 1]) {
+    const int s = out->segment[i];
+    if (s >= 0 && standing[s] && height[i] >= low[0] && height[i] <= high[kSlices - 1]) {
       index.push_back(static_cast<int>(i));
     }
   }

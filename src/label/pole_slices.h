@@ -37,9 +37,12 @@ inline bool atViewTop(const Eigen::Vector3f& p, float view_top) {
 /// pole_max_width), spans pole_min_span of height and is seen whole against the points flagged in @p seen (none:
 /// every thin component is) is a pole section. If the points of its segment within pole_radius of its axis, at any
 /// height, reach kPoleMinTop or @p view_top, those up to kPoleAboveSlice above its slice become kPole in @p out.
+/// @p standing flags the segments that reach either at all; the others' points are left out of the slices, as no
+/// pole can stand in them (cars, people, low bushes: a quarter or more of a street's slice points).
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole
 /// landmarks extracted from 3-D lidar scans", ECMR 2019.
 void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& height,
-               const std::vector<uint8_t>* seen, float view_top, const SegmentRuleConfig& r, Labelling* out);
+               const std::vector<uint8_t>* seen, float view_top, const std::vector<uint8_t>& standing,
+               const SegmentRuleConfig& r, Labelling* out);
 
 }  // namespace sgtllc::label
