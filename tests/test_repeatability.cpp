@@ -3,6 +3,7 @@
 // labeller benchmark gives for those two scans (BENCHMARKS.md, "Geometric labeller").
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <regex>
 
 #include "sgtllc/eval/label_agreement.h"
@@ -136,6 +137,34 @@ TEST_F(RepeatabilityCli, RefusesAPairNotInTheFolder) {
   const test::CliRun r = test::run("repeatability " + test::dataPath("kitti/00") + " --pair 000001:000052");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("--pair '000001:000052': expected QUERY:MATCH"), std::string::npos) << r.out;
+}
+
+
+TEST_F(RepeatabilityCli, PairsNeedOnlyTheirOwnLabels) {
+  // A KITTI folder that labels a few of its scans (as ../shared's KITTI 00 does): with --pair only the named scans
+  // need labels; a pair with an unlabelled scan is refused naming its missing file, and so is the whole folder.
+  namespace fs = std::filesystem;
+  const std::string kitti = test::dataPath("kitti/00");
+  fs::create_directories(path("seq/velodyne"));
+  fs::create_directories(path("seq/labels"));
+  for (const char* frame : {"004501", "000052"}) {
+    fs::copy_file(kitti + "/velodyne/" + frame + ".bin", path("seq/velodyne/") + frame + ".bin");
+    fs::copy_file(kitti + "/labels/" + frame + ".label", path("seq/labels/") + frame + ".label");
+  }
+  fs::copy_file(kitti + "/velodyne/000088.bin", path("seq/velodyne/000088.bin"));  // no label
+  fs::copy_file(kitti + "/calib.txt", path("seq/calib.txt"));
+  const std::string poses = " --poses " + kitti + "/poses_semantickitti.txt";
+  const test::CliRun ok = test::run("repeatability " + path("seq") + " --pair 004501:000052" + poses);
+  ASSERT_EQ(ok.status, 0) << ok.out;
+  EXPECT_NE(ok.out.find("geometric labeller         0.645 (20 of 31)"), std::string::npos) << ok.out;
+  const test::CliRun unlabelled =
+      test::run("repeatability " + path("seq") + " --pair 000088:000052 --max-distance 1000" + poses);
+  EXPECT_EQ(unlabelled.status, 1);
+  EXPECT_NE(unlabelled.out.find(path("seq/labels/000088.label") + ": missing label file"), std::string::npos)
+      << unlabelled.out;
+  const test::CliRun all = test::run("repeatability " + path("seq") + poses);
+  EXPECT_EQ(all.status, 1);
+  EXPECT_NE(all.out.find("000088.label: missing label file (1 of 3 scans"), std::string::npos) << all.out;
 }
 
 }  // namespace

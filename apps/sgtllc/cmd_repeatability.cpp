@@ -109,7 +109,8 @@ Json countsJson(const eval::NodeRepeatability& r, const LabelConfig& labels) {
 
 void runRepeatability(const RepeatabilityCliOptions& o) {
   const Config config = loadConfigOption(o.config, 0);
-  const io::SequenceDir seq(o.sequence, io::SequenceLabels{true, o.labels_dir, config.labels.format});
+  // With --pair only the named scans need labels (a KITTI folder may label a few of its scans).
+  const io::SequenceDir seq(o.sequence, io::SequenceLabels{true, o.labels_dir, config.labels.format, o.pairs.empty()});
   std::string poses_from;
   const std::vector<Eigen::Isometry3d> poses = lidarPosesOf(o, &poses_from);
   const auto pairs = pairIndices(o, seq);
@@ -236,7 +237,9 @@ void addRepeatabilityCommand(CLI::App& app) {
   cmd->add_option("--calib", o->calib,
                   "calib.txt whose Tr takes cam0 poses to the LiDAR frame (default SEQ_DIR/calib.txt if it exists)");
   addPoseFrameOption(*cmd, o->pose_frame, "the poses file");
-  cmd->add_option("--pair", o->pairs, "QUERY:MATCH scan names to compare (repeatable; default: each scan with the --gap-th next)");
+  cmd->add_option("--pair", o->pairs,
+                  "QUERY:MATCH scan names to compare (repeatable; default: each scan with the --gap-th next); only "
+                  "these scans need labels");
   cmd->add_option("--gap", o->gap, "compare each scan with the one this many scans after it")->check(CLI::Range(1, 1000000));
   cmd->add_option("--max-distance", o->max_distance, "skip pairs whose sensors are farther apart (m)")
       ->check(CLI::PositiveNumber);

@@ -86,7 +86,7 @@ SequenceDir::SequenceDir(const std::string& dir, const SequenceLabels& labels)
     }
     labels_.push_back(label.string());
   }
-  if (missing > 0) {
+  if (missing > 0 && labels.require_all) {
     const std::string no_field = format_ == ScanFormat::kKittiBin
                                      ? ""
                                      : std::string(", and ") + fs::path(scans_[0]).filename().string() +
@@ -105,6 +105,8 @@ LabeledCloud SequenceDir::load(size_t i) const {
     cloud.points = readScanPoints(scanPath(i));
     return cloud;
   }
+  std::error_code ec;
+  if (!fs::is_regular_file(labelPath(i), ec)) throw Error(labelPath(i) + ": missing label file");
   return readScanWithLabelFile(scanPath(i), labelPath(i), label_format_);
 }
 

@@ -17,6 +17,9 @@ struct SequenceLabels {
   bool read = true;     ///< false: scans only (labeller.source geometric); load() gives no labels
   std::string dir;      ///< folder of NAME.label files (a network's predictions/); "" = `DIR/labels`
   LabelFormat format = LabelFormat::kAuto;  ///< uint32 or one byte a point (LabelConfig::format; readLabelFile)
+  /// true: every scan must have its label file, checked at construction (the error counts the missing ones);
+  /// false: only the scans that are loaded, checked by load() (e.g. the pairs `repeatability --pair` names).
+  bool require_all = true;
 };
 
 /// The scans of one sequence and their labels. Only file names are collected at construction (and the header of
