@@ -115,7 +115,6 @@ Segmentation segmentVoxels(const std::vector<Eigen::Vector3f>& points, const std
   VoxelHash hash(used / 8);
   uint64_t last_key = kEmpty;  // consecutive points of a scan line mostly share a voxel
   int last_voxel = -1;
-  std::vector<uint64_t> voxel_keys;
   std::vector<std::array<int64_t, 3>> cells;
   for (size_t i = 0; i < n; ++i) {
     const Eigen::Vector3f& p = points[i];
