@@ -1,58 +1,30 @@
 // The geometric labeller (include/sgtllc/label/, docs/labeller.md): its settings (labeller.*) and label_scan, which
-// takes an (N, 3) or (N, 4) array (intensity ignored) and returns the classes. Adding a field is one line here and
-// one in sgtllc.pyi.
+// takes an (N, 3) or (N, 4) array (intensity ignored) and returns the classes. The settings are
+// properties made from the settings table (settings.h).
 #include "arrays.h"
 #include "bindings.h"
+#include "settings.h"
 #include "sgtllc/label/cloud_labeller.h"
 #include "sgtllc/label/geometric_labeller.h"
 
 namespace sgtllc::python {
 
 void bindLabel(py::module_& m) {
-  py::enum_<LabelSource>(m, "LabelSource", "Where the per-point classes come from (labeller.source).")
+  choiceEnum<LabelSource>(m, "LabelSource", "Where the per-point classes come from (labeller.source).")
       .value("FILE", LabelSource::kFile, "the label files read with the scans")
       .value("GEOMETRIC", LabelSource::kGeometric, "the scan's geometry alone (docs/labeller.md)")
       .value("HYBRID", LabelSource::kHybrid, "the label files, with poles and trunks their label set lacks split off by geometry");
 
   using G = GroundConfig;
-  py::class_<G>(m, "GroundConfig", "Ground segmentation (labeller.ground.*).")
-      .def(py::init<>())
-      .def_readwrite("sectors", &G::sectors, "angular sectors of the polar grid")
-      .def_readwrite("bin", &G::bin, "range bin (m)")
-      .def_readwrite("max_range", &G::max_range, "farther points are not ground-tested (m)")
-      .def_readwrite("min_range", &G::min_range, "nearer points do not estimate the ground height (m)")
-      .def_readwrite("step", &G::step, "step a ground line may make between bins (m)")
-      .def_readwrite("max_slope", &G::max_slope, "rise per metre a ground line may have")
-      .def_readwrite("max_climb", &G::max_climb, "rise per metre from the sensor's ground height")
-      .def_readwrite("tolerance", &G::tolerance, "points this far above the ground height or lower are ground (m)");
+  settingsClass<G>(m, "GroundConfig", "Ground segmentation (labeller.ground.*).")
+      .def(py::init<>());
 
   using S = SegmentRuleConfig;
-  py::class_<S>(m, "SegmentRuleConfig", "Segments and class rules (labeller.segments.*).")
-      .def(py::init<>())
-      .def_readwrite("voxel", &S::voxel, "voxel leaf of the segments (m)")
-      .def_readwrite("min_points", &S::min_points, "smaller segments are dropped")
-      .def_readwrite("min_voxel_points", &S::min_voxel_points, "a voxel's shape counts from this many points")
-      .def_readwrite("pole_max_width", &S::pole_max_width, "pole: horizontal extent at most (m)")
-      .def_readwrite("pole_min_height", &S::pole_min_height, "pole: vertical extent at least (m)")
-      .def_readwrite("pole_slice_low", &S::pole_slice_low, "pole slice: from this height above the ground (m)")
-      .def_readwrite("pole_slice_high", &S::pole_slice_high, "pole slice: up to this height (m)")
-      .def_readwrite("pole_min_span", &S::pole_min_span, "pole slice: height a thin component spans (m)")
-      .def_readwrite("pole_voxel", &S::pole_voxel, "pole slice: voxel leaf (m)")
-      .def_readwrite("pole_radius", &S::pole_radius, "pole slice: radius around a pole axis (m)")
-      .def_readwrite("pole_max_occluded", &S::pole_max_occluded,
-                     "a pole is kept if at most this share of the points beside either side lie nearer [0, 1]")
-      .def_readwrite("building_min_top", &S::building_min_top, "tall: reaches this high above the ground (m)")
-      .def_readwrite("building_min_length", &S::building_min_length, "building: length at least (m)")
-      .def_readwrite("fence_max_top", &S::fence_max_top, "fence: ends below this height (m)")
-      .def_readwrite("fence_min_length", &S::fence_min_length, "fence: length at least (m)")
-      .def_readwrite("fence_max_width", &S::fence_max_width, "fence: thickness at most (m)")
-      .def_readwrite("min_wall_share", &S::min_wall_share, "building: share of wall voxels")
-      .def_readwrite("min_fence_wall_share", &S::min_fence_wall_share, "fence: share of wall voxels")
-      .def_readwrite("min_scatter_share", &S::min_scatter_share, "vegetation: share of scattered voxels");
+  settingsClass<S>(m, "SegmentRuleConfig", "Segments and class rules (labeller.segments.*).")
+      .def(py::init<>());
 
-  py::class_<LabellerConfig>(m, "LabellerConfig", "Where the classes come from, and the geometric labeller (labeller.*).")
+  settingsClass<LabellerConfig>(m, "LabellerConfig", "Where the classes come from, and the geometric labeller (labeller.*).")
       .def(py::init<>())
-      .def_readwrite("source", &LabellerConfig::source, "LabelSource")
       .def_readwrite("ground", &LabellerConfig::ground, "ground segmentation")
       .def_readwrite("segments", &LabellerConfig::segments, "segments and class rules");
 

@@ -11,10 +11,13 @@
 namespace sgtllc::python {
 namespace {
 
-/// The value type from a pybind11 setter's signature "(self: sgtllc.GraphConfig, arg0: float) -> None".
+/// The value type from a pybind11 setter's signature "(self: sgtllc.GraphConfig, arg0: float) -> None" or
+/// "(arg0: sgtllc.GraphConfig, arg1: float) -> None".
 std::string expectedType(const py::object& fset) {
   const std::string doc = py::str(fset.attr("__doc__"));
-  const size_t from = doc.find("arg0: ");
+  // def_readwrite's setters take (self, arg0); the settings table's lambdas (settings.h) take (arg0, arg1).
+  size_t from = doc.find(", arg1: ");
+  from = from == std::string::npos ? doc.find("arg0: ") : from + 2;
   const size_t to = doc.find(") -> None");
   if (from == std::string::npos || to == std::string::npos || to <= from) return "a value of the attribute's type";
   return doc.substr(from + 6, to - from - 6);

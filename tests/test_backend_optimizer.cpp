@@ -156,7 +156,7 @@ TEST(BackendOptimizer, RecoversTheTrajectoryFromNoisyOdometryAndExactLoops) {
   }
   BackendConfig config;
   config.loop_loss = RobustLoss::kNone;     // exact loops: plain least squares
-  config.consistency.translation_m = 1e9;   // and no outlier step
+  config.consistency.translation_m = 1000.0;  // and no outlier step (the range's top)
   config.consistency.rotation_rad = 10.0;
   const BackendResult r = optimize(graph, config);
   EXPECT_GT(ate(graph.poses, truth), 2.0);
@@ -189,7 +189,7 @@ TEST(BackendOptimizer, FalseLoopsAreRejectedAndDoNotBendTheMap) {
   }
   // Without the outlier step the same loops do bend the map (the test can fail).
   BackendConfig no_outlier_step;
-  no_outlier_step.consistency.translation_m = 1e9;
+  no_outlier_step.consistency.translation_m = 1000.0;
   no_outlier_step.consistency.rotation_rad = 10.0;
   no_outlier_step.max_rejection_rounds = 0;
   no_outlier_step.loop_loss = RobustLoss::kNone;

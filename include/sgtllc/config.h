@@ -4,10 +4,12 @@
 /// Defaults are the project's choices for KITTI (algorithm §1–§8). YAML keys mirror the field names one to one
 /// (`cluster.building.min_size`, `verification.sigma_4`, …); `sgtllc config` prints them.
 ///
-/// Every numeric field has an allowed range, given in brackets in its comment ("[0, 1]"; a parenthesis marks an
-/// open end). Config::validate() enforces them. Scores and fractions lie in [0, 1], cosines in [-1, 1]; lengths
-/// are bounded by what a LiDAR scan can contain; counts and iterations are bounded so that no configuration can
-/// make a single frame take more than seconds.
+/// Each setting's key, range, unit and one line of meaning are declared once, in the settings table
+/// (sgtllc/config/settings.h, src/config/settings_*.cpp; listed in docs/configuration.md), which drives
+/// Config::validate(), the YAML reader and writer and the Python properties. Scores and fractions lie in [0, 1],
+/// cosines in [-1, 1]; lengths are bounded by what a LiDAR scan can contain; counts and iterations are bounded so
+/// that no configuration can make a single frame take more than seconds. The comments below say what each field
+/// does and why it has its default.
 #pragma once
 
 #include <array>
@@ -84,8 +86,8 @@ struct ClassClusterConfig {
   /// Voxel leaf (m); 0 = no downsampling. 0 or [0.001, 10]: the lower bound keeps the cells of points within
   /// ±kMaxCoordinate exact integers.
   double voxel = 0.0;
-  double radius = 1.0;  ///< FEC radius r (m) [0.001, 10]
-  int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points [1, 1000000]
+  double radius = 1.0;  ///< FEC radius r (m)
+  int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points
 };
 
 struct ClusterConfig {
@@ -100,8 +102,8 @@ struct ClusterConfig {
       {0.0, 1.0, 20},   // pole
       {0.0, 1.0, 20},   // traffic-sign
   };
-  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (algorithm §2) [1, 10000]
-  /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (algorithm §2) [0, 100].
+  int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (algorithm §2)
+  /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (algorithm §2).
   double duplicate_radius = 1.0;
   CentreSource centre = CentreSource::kPoints;  ///< node centre source (algorithm §11 [CHOICE])
 };
@@ -110,9 +112,9 @@ struct ClusterConfig {
 inline constexpr int kMaxGraphNodes = 2000;
 
 struct GraphConfig {
-  /// σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (algorithm §3) (0, 1000].
+  /// σ_d: nodes are adjacent iff their distance is < σ_d (m, strict) (algorithm §3).
   double sigma_d = 30.0;
-  /// Most nodes one frame's graph may have [1, kMaxGraphNodes = 2000]. The graph is dense: its memory and the
+  /// Most nodes one frame's graph may have. The graph is dense: its memory and the
   /// association time grow with the square of the node count (1,000 nodes: 9 MB per graph). Real scans give
   /// 20–70 nodes (algorithm §2), so the default leaves 14× headroom. A scan with more clusters keeps the max_nodes
   /// with the most points (NodeExtractor; counted in ExtractionStats::capped_nodes); ready-made nodes above it
@@ -174,26 +176,26 @@ enum class RetrievalKey {
 struct RetrievalConfig {
   RetrievalKey key = RetrievalKey::kDistanceHistogram;  ///< the stored, searched key
   /// Bins per class pair of the distance histogram (key histogram). 30 bins over 60 m with seven classes:
-  /// 840 floats (3,360 bytes) per stored frame [1, 100].
+  /// 840 floats (3,360 bytes) per stored frame.
   int histogram_bins = 30;
-  /// Distances (m) the histogram covers; node pairs this far apart or farther do not vote (0, 1000]. [choice: 60 m
+  /// Distances (m) the histogram covers; node pairs this far apart or farther do not vote. [choice: 60 m
   /// rather than 20 puts a label-free revisit driven the other way among the candidates far more often;
   /// BENCHMARKS.md "Retrieval key"]
   double histogram_range = 60.0;
-  int num_candidates = 15;   ///< K: candidates retrieved per query (algorithm §5) [1, 1000]
-  /// G: query q searches only frames with index ≤ q − G (algorithm §5 [CHOICE]) [1, 1000000]. A sequence of at most G
+  int num_candidates = 15;   ///< K: candidates retrieved per query (algorithm §5)
+  /// G: query q searches only frames with index ≤ q − G (algorithm §5 [CHOICE]). A sequence of at most G
   /// frames has no candidates at all (LoopDetector::firstSearchedFrame).
   int exclude_recent = 50;
-  /// No query before this many frames are in the database (authors' code: 150) [0, 1000000].
+  /// No query before this many frames are in the database (authors' code: 150).
   int warmup_frames = 0;
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
-  /// Lists of the inverted file (method ivf); 0: 2·√N at training, within [16, 16384] [0, 65536].
+  /// Lists of the inverted file (method ivf); 0: 2·√N at training, within [16, 16384].
   int ivf_lists = 0;
   /// Lists a query scans (method ivf). 20 of the 2,000 lists of a million-frame map found 0.991 of the exact
-  /// top-15 in 3.6 ms of CPU on the harder of the two query sets of BENCHMARKS.md "Retrieval at scale" [1, 65536].
+  /// top-15 in 3.6 ms of CPU on the harder of the two query sets of BENCHMARKS.md "Retrieval at scale".
   int ivf_probe = 20;
   /// Frames stored before the inverted file is trained (method ivf); fewer are searched exactly. With
-  /// ivf_lists 0 it is trained again each time the database has grown fourfold [64, 1000000].
+  /// ivf_lists 0 it is trained again each time the database has grown fourfold.
   int ivf_train_frames = 20000;
 };
 
@@ -204,10 +206,10 @@ enum class NodeScore {
 };
 
 struct AssociationConfig {
-  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (algorithm §6) [-1, 1]
-  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (algorithm §6) (0, 1000000]
-  /// σ_2: accept the best candidate node iff S ≥ σ_2 (algorithm §6). [0, 1] with score ratio; [0, C²] (the slot
-  /// count: 49 for the seven classes) with score count. [deviation: the paper's 0.3 starved opposite-direction
+  double sigma_1 = 0.9;          ///< σ_1: a slot matches iff cos(u, v) > σ_1 (algorithm §6)
+  double max_delta_aj = 100.0;   ///< ... and |Δa_j| < this (m²); the code's √|Δ| < 10 test (algorithm §6)
+  /// σ_2: accept the best candidate node iff S ≥ σ_2 (algorithm §6): a share of the slots with score ratio, a
+  /// count of them (at most C², the slot count: 49 for the seven classes) with score count. [deviation: the paper's 0.3 starved opposite-direction
   /// revisits of associations; RANSAC rejects the wrong pairs. BENCHMARKS.md "Association and RANSAC sample"]
   double sigma_2 = 0.2;
   NodeScore score = NodeScore::kRatio;  ///< node similarity form (algorithm §6)
@@ -224,24 +226,24 @@ enum class ScoreFormula {
 };
 
 struct VerificationConfig {
-  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1) [0, 1]. [deviation: with the overlap
+  /// σ_3: skip a candidate if score_c = |LA| / M < σ_3 (algorithm §7.1). [deviation: with the overlap
   /// score, which already divides by the larger graph, the paper's gates (σ_3 0.35, |LA| ≥ 7, 5 inliers;
   /// configs/paper.yaml) only dropped true loops in small graphs. BENCHMARKS.md "Verification gates"]
   double sigma_3 = 0.0;
-  int min_associations = 3;       ///< ... or if |LA| is below this (algorithm §7.1) [1, kMaxGraphNodes]
-  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (algorithm §7.2) [1, 10000]
-  /// Node pairs drawn per hypothesis (algorithm §7.2) [3, 100]. [deviation: the paper's and code's 7; the minimal
+  int min_associations = 3;       ///< ... or if |LA| is below this (algorithm §7.1)
+  int ransac_iterations = 500;    ///< RANSAC hypotheses per candidate (algorithm §7.2)
+  /// Node pairs drawn per hypothesis (algorithm §7.2). [deviation: the paper's and code's 7; the minimal
   /// 3, checked for distance consistency before the fit (src/ransac.cpp), is as good and faster. BENCHMARKS.md
   /// "Association and RANSAC sample"]
   int ransac_sample_size = 3;
   bool sample_with_replacement = true;  ///< draw with replacement, as the authors' code (algorithm §7.2)
-  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (algorithm §7.2) (0, 10]
-  /// A hypothesis is accepted only with at least this many inliers (algorithm §7.2) [1, kMaxGraphNodes]. [deviation:
+  double inlier_threshold = 0.4;  ///< a pair is an inlier iff ‖R s + t − t′‖ < this (m) (algorithm §7.2)
+  /// A hypothesis is accepted only with at least this many inliers (algorithm §7.2). [deviation:
   /// the authors' 5; see sigma_3]
   int min_inliers = 3;
-  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (algorithm §7.2) [0, 1]
+  double min_inlier_fraction = 0.01;  ///< ... and at least this share of |LA| (algorithm §7.2)
   /// Adaptive RANSAC: stop once an all-inlier sample of the best hypothesis has been drawn with this probability;
-  /// 1 = always run ransac_iterations, as the authors' code. (0, 1]. [deviation: 500 fixed iterations cost
+  /// 1 = always run ransac_iterations, as the authors' code. [deviation: 500 fixed iterations cost
   /// ~0.5 ms per candidate that passes the gates; at the inlier ratios of true loops (60–80 %, algorithm §11) ~50
   /// suffice]
   double ransac_confidence = 0.999;
@@ -251,11 +253,11 @@ struct VerificationConfig {
   ScoreFormula score_formula = ScoreFormula::kOverlap;
   /// false = no RANSAC (Table IV "w/o RANSAC"): score = score_c and the pose is fitted to all associations.
   bool use_ransac = true;
-  /// σ_4: a loop iff the best score > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) [0, 1] (every score
+  /// σ_4: a loop iff the best score > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) (every score
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
   /// Largest tilt (°) between the up axes of a loop's two scans: RANSAC skips a hypothesis whose rotation turns z
-  /// by more (algorithm §7.2) [1, 180]; 180 = no check. A sensor pitched by α on the vehicle turns z by up to 2α
+  /// by more (algorithm §7.2); 180 = no check. A sensor pitched by α on the vehicle turns z by up to 2α
   /// between passes driven opposite ways, so a mount pitched more than ~10° wants 180 (or its scans turned into a
   /// z-up frame). [deviation: the paper and the code fit any rotation, including the upside-down mirror of objects
   /// on flat ground. BENCHMARKS.md "Upright check"]
@@ -268,48 +270,48 @@ struct VerificationConfig {
   bool guided_matching = true;
   /// The consistency path (consistent_matching.h, algorithm §7.8): when the descriptors' candidate is not a loop,
   /// each query node's this many most similar same-class match nodes become hypotheses and their largest
-  /// pairwise-consistent set is verified as RANSAC's would be; 0 = off, as the paper [0, 16]. Only with
+  /// pairwise-consistent set is verified as RANSAC's would be; 0 = off, as the paper. Only with
   /// score_formula overlap and use_ransac. [deviation: BENCHMARKS.md "Consistency path"]
   int consistency_pairs = 16;
   /// Weak evidence (algorithm §7.7): a loop verified by at most this many inliers must reach weak_min_footprint
-  /// instead of min_footprint_overlap; 0 = no such rule [0, 1000]. [deviation: BENCHMARKS.md "Weak evidence"]
+  /// instead of min_footprint_overlap; 0 = no such rule. [deviation: BENCHMARKS.md "Weak evidence"]
   int weak_inliers = 4;
   /// ... the footprint share such a loop, and every loop of the consistency path, needs (for the consistency
-  /// path the check must also have run: both frames from scans, min_footprint_overlap > 0) [0, 1].
+  /// path the check must also have run: both frames from scans, min_footprint_overlap > 0).
   /// [deviation: BENCHMARKS.md "Consistency path", "Weak evidence"]
   double weak_min_footprint = 0.65;
   /// Top-1 choice (selection.h): 0 = the highest score, as the paper (algorithm §7.4); m > 0 = among the verified
   /// candidates scoring at least best − m, the one whose estimated translation is smallest, so that a revisit
-  /// wins over its 3–20 m neighbours along the old pass [0, 1]. [deviation: tuned on the urban11 and sub7
+  /// wins over its 3–20 m neighbours along the old pass. [deviation: tuned on the urban11 and sub7
   /// sequences, see BENCHMARKS.md ("Top-1 choice")]
   double select_margin = 0.15;
   /// A chosen candidate whose estimated offset ‖t(T_match_query)‖ is at least this is reported as lateral
   /// (FrameResult::lateral): a neighbour of the revisit along the old pass, not the revisit itself. It is still a
-  /// loop (its pose is a valid constraint), but the top-1 protocol does not claim it as a revisit (m) (0, 1000].
+  /// loop (its pose is a valid constraint), but the top-1 protocol does not claim it as a revisit (m).
   /// [deviation: 3 m is the protocols' positive distance; BENCHMARKS.md, "Top-1 choice"]
   double lateral_distance = 3.0;
   /// Neighbour check of the top-1 (detector.h, Candidate::retrieved): when the chosen candidate is a loop, the
   /// database frames within ±neighbour_frames of it that retrieval did not return are verified too, and the top-1
-  /// is chosen again among all (select_margin); 0 = off, as the paper [0, 50]. [deviation: the old pass's frame
+  /// is chosen again among all (select_margin); 0 = off, as the paper. [deviation: the old pass's frame
   /// nearest the query often ranks just outside the K retrieved. BENCHMARKS.md "Top-1 choice"]
   int neighbour_frames = 2;
   /// Offset decay of score (verification.h, offsetWeight): a verified candidate whose estimated offset
   /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score is scaled down linearly to 0
-  /// at offset_decay_end (m) [0, 1000]. [deviation: two passes along one street 20 m apart share many objects, so
+  /// at offset_decay_end (m). [deviation: two passes along one street 20 m apart share many objects, so
   /// only their pose tells them from a revisit. BENCHMARKS.md "Offset decay of the loop score"]
   double offset_decay_start = 10.0;
-  /// ... and the offset at which score reaches 0 (m); 0 = no decay, as the paper [0, 1000], 0 or greater than
+  /// ... and the offset at which score reaches 0 (m); 0 = no decay, as the paper; else greater than
   /// offset_decay_start.
   double offset_decay_end = 20.0;
   /// Footprint check (footprint.h, algorithm §7.7): a verified candidate is rejected (Rejection::kFootprint) when,
   /// under its pose, fewer than this share of the query's structure cells land on or next to the match's (with at
-  /// least 20 cells compared); 0 = off, as the paper [0, 1]. Needs the scans' points: frames given as nodes are not
+  /// least 20 cells compared); 0 = off, as the paper. Needs the scans' points: frames given as nodes are not
   /// checked (a map file keeps its frames' footprints). [deviation: few nodes can agree by chance between two
   /// places; the walls around them rarely do. BENCHMARKS.md "Footprint check"]
   double min_footprint_overlap = 0.5;
-  double footprint_cell = 0.5;     ///< side of a footprint cell (m) [0.2, 10]
-  double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m) [5, 200]
-  /// RANSAC random seed; every candidate starts from it (algorithm §7.2 [CHOICE]) [0, 2³² − 1].
+  double footprint_cell = 0.5;     ///< side of a footprint cell (m)
+  double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m)
+  /// RANSAC random seed; every candidate starts from it (algorithm §7.2 [CHOICE]).
   uint32_t seed = 42;
 };
 
@@ -331,9 +333,9 @@ struct Config {
   VerificationConfig verification;
   /// Fine registration of loop poses (point-to-plane ICP; `sgtllc pair` by default, online as an option).
   RegistrationConfig registration;
-  int threads = 1;  ///< worker threads for candidate verification; results do not depend on it [1, kMaxThreads]
+  int threads = 1;  ///< worker threads for candidate verification; results do not depend on it
   /// Pose-graph back end (`sgtllc run --odometry`, `sgtllc optimize`): plain data here, the optimiser is the
-  /// separate sgtllc_backend library. Ranges: validateBackendConfig (config_backend.cpp) and docs/backend.md.
+  /// separate sgtllc_backend library (docs/backend.md).
   backend::BackendConfig backend;
 
   /// C = labels.numClasses().
@@ -343,18 +345,12 @@ struct Config {
   /// class index. Config::validate() checks the name and ids.
   int addClass(ExtraClass extra, const ClassClusterConfig& cluster = {});
 
-  /// Throws ConfigError for the first field whose value is out of range, e.g.
-  /// "verification.sigma_4 = 5 is out of range [0, 1]", or an invalid class set
+  /// Throws ConfigError for the first field whose value is out of its range in the settings table, e.g.
+  /// "verification.sigma_4 = 5 is out of range [0, 1]", for settings that contradict each other, or an invalid
+  /// class set
   /// ("labels.extra_classes[0].name: 'pole' is one of the paper's classes").
   void validate() const;
 };
-
-/// Range checks of the back-end settings as ConfigError (`backend.loss_scale = 0 is out of range (0, 1000]`); a
-/// configuration that passes also passes backend::BackendConfig::validate().
-void validateBackendConfig(const backend::BackendConfig& backend);
-
-/// Range checks of the labeller settings as ConfigError (label/labeller_config.cpp), and the class set it needs.
-void validateLabellerConfig(const LabellerConfig& labeller, const LabelConfig& labels);
 
 /// The label space of the node extraction: @p config.labels, or with labeller.source geometric the
 /// SemanticKITTI raw ids the geometric labeller writes (LabelConfig{}).
@@ -362,9 +358,6 @@ LabelConfig effectiveLabelConfig(const Config& config);
 /// The same for a label set and labeller settings: with labeller.source hybrid, the SemanticKITTI ids too when it
 /// splits anything off (hybridSplits in labels.h), else @p labels.
 LabelConfig effectiveLabelConfig(const LabelConfig& labels, const LabellerConfig& labeller);
-
-/// Range checks of the registration settings as ConfigError (registration_config.cpp).
-void validateRegistrationConfig(const RegistrationConfig& registration);
 
 /// A configuration value out of its allowed range. key() is the YAML key (`verification.sigma_4`), so a reader
 /// of a configuration file can point at the offending line.

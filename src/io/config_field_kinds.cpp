@@ -1,4 +1,4 @@
-// The kinds of value a configuration Field holds (config_field_kinds.h): their printers and parsers.
+// How a setting is printed and read in YAML, by its type (config_field_kinds.h).
 #include "config_field_kinds.h"
 
 #include <cerrno>
@@ -35,28 +35,6 @@ bool parseInt(const std::string& s, long long lo, long long hi, long long* out) 
 
 std::string scalarText(const YAML::Node& node) { return node.IsScalar() ? node.Scalar() : std::string(); }
 
-Field number(std::string key, std::string comment, std::function<double&(Config&)> ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return formatDouble(ref(const_cast<Config&>(c))); },
-               [ref](Config& c, const YAML::Node& n) -> std::string {
-                 double v = 0.0;
-                 if (!parseDouble(scalarText(n), &v)) return "expected a finite number";
-                 ref(c) = v;
-                 return "";
-               }};
-}
-
-Field boolean(std::string key, std::string comment, std::function<bool&(Config&)> ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return std::string(ref(const_cast<Config&>(c)) ? "true" : "false"); },
-               [ref](Config& c, const YAML::Node& n) -> std::string {
-                 const std::string s = scalarText(n);
-                 if (s != "true" && s != "false") return "expected true or false";
-                 ref(c) = (s == "true");
-                 return "";
-               }};
-}
-
 std::string readIds(const YAML::Node& n, std::vector<uint32_t>* out) {
   if (!n.IsSequence()) return "expected a list of raw ids, e.g. [10, 252]";
   out->clear();
@@ -74,10 +52,63 @@ std::string idsText(const std::vector<uint32_t>& ids) {
   return s + "]";
 }
 
-Field idList(std::string key, std::string comment, std::function<std::vector<uint32_t>&(Config&)> ref) {
-  return Field{std::move(key), std::move(comment),
-               [ref](const Config& c) { return idsText(ref(const_cast<Config&>(c))); },
-               [ref](Config& c, const YAML::Node& n) -> std::string { return readIds(n, &ref(c)); }};
+Field fieldOf(const Setting& setting) {
+  Field f{setting.key, setting.comment(), nullptr, nullptr};
+  // Settings are copied into the closures: the table that made them is gone by the time they run.
+  switch (setting.type) {
+    case SettingType::kReal:
+      f.print = [setting](const Config& c) { return formatDouble(setting.value(c)); };
+      f.set = [setting](Config& c, const YAML::Node& n) -> std::string {
+        double v = 0.0;
+        if (!parseDouble(scalarText(n), &v)) return "expected a finite number";
+        setting.assign(c, v);
+        return "";
+      };
+      break;
+    case SettingType::kInteger:
+      f.print = [setting](const Config& c) { return std::to_string(static_cast<long long>(setting.value(c))); };
+      f.set = [setting](Config& c, const YAML::Node& n) -> std::string {
+        long long v = 0;
+        const auto lo = static_cast<long long>(setting.storage_lo), hi = static_cast<long long>(setting.storage_hi);
+        if (!parseInt(scalarText(n), lo, hi, &v)) {
+          return "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
+        }
+        setting.assign(c, static_cast<double>(v));
+        return "";
+      };
+      break;
+    case SettingType::kFlag:
+      f.print = [setting](const Config& c) { return std::string(setting.value(c) != 0.0 ? "true" : "false"); };
+      f.set = [setting](Config& c, const YAML::Node& n) -> std::string {
+        const std::string s = scalarText(n);
+        if (s != "true" && s != "false") return "expected true or false";
+        setting.assign(c, s == "true" ? 1.0 : 0.0);
+        return "";
+      };
+      break;
+    case SettingType::kChoice:
+      f.print = [setting](const Config& c) { return setting.choiceName(static_cast<int>(setting.value(c))); };
+      f.set = [setting](Config& c, const YAML::Node& n) -> std::string {
+        const std::string s = scalarText(n);
+        std::string options;
+        for (const auto& [name, value] : setting.choices) {
+          if (name == s) {
+            setting.assign(c, value);
+            return "";
+          }
+          options += (options.empty() ? "" : " | ") + name;
+        }
+        return "expected one of " + options;
+      };
+      break;
+    case SettingType::kIdList:
+      f.print = [setting](const Config& c) { return idsText(setting.idList(const_cast<Config&>(c))); };
+      f.set = [setting](Config& c, const YAML::Node& n) -> std::string { return readIds(n, &setting.idList(c)); };
+      break;
+    case SettingType::kCustom:
+      break;  // config_fields.cpp's own
+  }
+  return f;
 }
 
 }  // namespace sgtllc::io::detail

@@ -25,7 +25,7 @@ struct OdometryNoise {
 struct LoopNoise {
   double sigma_min = 0.15;  ///< floor of the per-axis centre noise σ (m); node centres move with segmentation
   /// Scales the fit's information down (< 1) to account for errors shared by all centres of a frame (one
-  /// segmentation, one scan), which the independent-noise model ignores. Unitless, in (0, 1].
+  /// segmentation, one scan), which the independent-noise model ignores. Unitless.
   double information_scale = 0.25;
 };
 

@@ -9,7 +9,7 @@
 namespace sgtllc {
 
 /// Point-to-plane ICP on the stable-class points of both scans, seeded by the SVD pose of verification.
-/// YAML keys `registration.NAME`; the range of each field is in brackets.
+/// YAML keys `registration.NAME`; ranges in the settings table (settings.h).
 struct RegistrationConfig {
   /// Refine the pose of comparePair (`sgtllc pair`) when both inputs are labelled scans (node input has no points).
   bool pair = true;
@@ -22,47 +22,47 @@ struct RegistrationConfig {
   /// barely height, roll and pitch; the ground fixes those: on urban11's loops the height error fell from 2.3 to
   /// 0.2 cm (docs/registration.md). Empty = the stable classes alone. Set the ground ids of other presets here.
   std::vector<uint32_t> ground_ids = {40, 44, 48, 49};
-  /// Voxel leaf (m) of the query (source) scan's points: the points that are moved [0.05, 10]. 0.3 m and 8,000
+  /// Voxel leaf (m) of the query (source) scan's points: the points that are moved. 0.3 m and 8,000
   /// points against 0.5 m and 4,000: urban11's loops 0.55 → 0.42 cm, KITTI 00 4501 → 52 1.05 → 0.37 cm from the
   /// reference, at about twice the ICP time.
   double voxel = 0.3;
-  /// Most query points kept after downsampling; beyond it an even stride over the voxels [100, 1000000].
+  /// Most query points kept after downsampling; beyond it an even stride over the voxels.
   int max_points = 8000;
   /// Voxel leaf (m) of the match (target) scan's stable-class points, whose planes the query points meet: finer,
-  /// so a plane's normal and offset come from many points [0.05, 10].
+  /// so a plane's normal and offset come from many points.
   double match_voxel = 0.2;
-  /// Most match points kept [100, 1000000]. Online, every frame keeps its match cloud: at most 6 · this bytes
+  /// Most match points kept. Online, every frame keeps its match cloud: at most 6 · this bytes
   /// (60 KB). On urban11's loops 10,000 were as accurate as 20,000 at half the store and ICP time.
   int match_max_points = 10000;
-  /// Neighbours (the point included) whose covariance gives a target point's normal [5, 100].
+  /// Neighbours (the point included) whose covariance gives a target point's normal.
   int normal_neighbors = 10;
-  /// A source point pairs with its nearest target point only if it lies this close (m), 3-D distance (0, 10].
+  /// A source point pairs with its nearest target point only if it lies this close (m), 3-D distance.
   /// Pairs farther apart join different surfaces: on urban11's loops 1 m left 2.7 cm, 0.5 m 1.6 cm and 0.3 m
   /// 1.2 cm (ground left out; with the ground 0.9 → 0.6 cm). The SVD seed is within a few cm.
   double max_correspondence = 0.3;
   /// Pairing distance (m) of a first, coarse ICP stage before the stage at max_correspondence; no coarse stage if
-  /// not above max_correspondence [0, 10]. A seed from a few node centres can be a metre and some degrees off.
+  /// not above max_correspondence. A seed from a few node centres can be a metre and some degrees off.
   double coarse_correspondence = 1.0;
-  /// Scale k (m) of the Cauchy weight 1 / (1 + r²/k²) on point-to-plane residuals r; 0 = unweighted [0, 10]. (On
+  /// Scale k (m) of the Cauchy weight 1 / (1 + r²/k²) on point-to-plane residuals r; 0 = unweighted. (On
   /// KITTI 00 4501 → 52, k = 0.1 m moved the result away from the ICP reference: 0.4 → 1.1 cm.)
   double kernel = 0.0;
-  /// Gauss-Newton iterations at most [1, 500].
+  /// Gauss-Newton iterations at most.
   int max_iterations = 30;
-  /// Converged once an update moves by less than this: translation in metres and rotation in radians (0, 0.1].
+  /// Converged once an update moves by less than this: translation in metres and rotation in radians.
   double convergence = 1e-5;
   /// Fitness = share of source points paired within max_correspondence at the final pose; below this the
-  /// refinement fails and the SVD pose is kept [0, 1].
+  /// refinement fails and the SVD pose is kept.
   double min_fitness = 0.3;
-  /// The refinement fails (SVD pose kept) if it moves the pose by more than this translation (m) (0, 100] ...
+  /// The refinement fails (SVD pose kept) if it moves the pose by more than this translation (m) ...
   /// A bound on divergence, not on the seed's error: a seed from 3–5 node centres of a 32-beam scan is often
   /// 0.5–2 m and 2–27° off, and the two ICP stages bring it within 0.3 m / 2° (BENCHMARKS.md, "Fine registration").
   double max_translation_change = 5.0;
-  /// ... or by more than this rotation (degrees) (0, 180].
+  /// ... or by more than this rotation (degrees).
   double max_rotation_change_deg = 30.0;
-  /// Floor of the point-to-plane residual σ (m) in the information matrix (0, 10].
+  /// Floor of the point-to-plane residual σ (m) in the information matrix.
   double information_sigma_min = 0.01;
   /// Scales the information Σ JᵀJ / σ² down (< 1): neighbouring points share one surface and one scan, so they
-  /// are not independent observations. Unitless (0, 1].
+  /// are not independent observations. Unitless.
   double information_scale = 0.01;
 };
 

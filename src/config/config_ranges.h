@@ -1,5 +1,5 @@
-// Range checks of Config::validate() (config.cpp, config_backend.cpp): ConfigError messages of the form
-// "KEY = VALUE is out of range [LO, HI]". Internal to the core library.
+// Range checks of Config::validate() and the settings table (config.cpp, settings.cpp): ConfigError messages of
+// the form "KEY = VALUE is out of range [LO, HI]". Internal to the core library.
 #pragma once
 
 #include <charconv>
@@ -48,5 +48,8 @@ inline void checkInt(const std::string& key, int v, long long lo, long long hi) 
 
 // Counts of frames: far beyond any recorded sequence (KITTI 00 has 4,541 frames).
 constexpr long long kMaxFrames = 1000000;
+
+/// The labeller's rules that tie its settings together (labeller_config.cpp), and the class set it needs.
+void validateLabellerRules(const LabellerConfig& labeller, const LabelConfig& labels);
 
 }  // namespace sgtllc::detail

@@ -5,6 +5,7 @@
 
 #include "config_ranges.h"
 #include "retrieval/ivf_index.h"
+#include "sgtllc/config/settings.h"
 #include "sgtllc/labels.h"
 
 namespace sgtllc {
@@ -85,7 +86,8 @@ int Config::addClass(ExtraClass extra, const ClassClusterConfig& params) {
 }
 
 void Config::validate() const {
-  // Ranges are documented field by field in config.h; keep the two in step.
+  // Each setting's own range comes from the settings table (config/settings.h); here are the rules that tie
+  // settings together.
   validateExtraClasses(labels);
   const int num_classes = numClasses();
   for (const auto& [id, cls] : labels.custom_map) {
@@ -96,34 +98,11 @@ void Config::validate() const {
                                      " entries for " + std::to_string(num_classes) +
                                      " classes (one per class; Config::addClass appends both)");
   }
-  for (int c = 0; c < num_classes; ++c) {
-    const std::string key = "cluster." + labels.className(c);
-    const ClassClusterConfig& p = cluster.classes[c];
-    // Lower bounds keep voxel cells of points within ±1e6 m inside the exact integer cell range.
-    if (p.voxel != 0.0 && !inside(p.voxel, {0.001}, {10.0})) {
-      outOfRange(key + ".voxel", text(p.voxel), "0 (no downsampling) or [0.001, 10]");
-    }
-    checkReal(key + ".radius", p.radius, {0.001}, {10.0});
-    checkInt(key + ".min_size", p.min_size, 1, 1000000);
-  }
-  checkInt("cluster.max_neighbors", cluster.max_neighbors, 1, 10000);
-  checkReal("cluster.duplicate_radius", cluster.duplicate_radius, {0.0}, {100.0});
-  checkReal("graph.sigma_d", graph.sigma_d, {0.0, false}, {1000.0});
-  checkInt("graph.max_nodes", graph.max_nodes, 1, kMaxGraphNodes);
-  checkInt("retrieval.histogram_bins", retrieval.histogram_bins, 1, 100);
-  checkReal("retrieval.histogram_range", retrieval.histogram_range, {0.0, false}, {1000.0});
-  checkInt("retrieval.num_candidates", retrieval.num_candidates, 1, 1000);
-  checkInt("retrieval.exclude_recent", retrieval.exclude_recent, 1, kMaxFrames);  // a frame never matches itself
-  checkInt("retrieval.warmup_frames", retrieval.warmup_frames, 0, kMaxFrames);
-  checkInt("retrieval.ivf_lists", retrieval.ivf_lists, 0, 65536);
-  checkInt("retrieval.ivf_probe", retrieval.ivf_probe, 1, 65536);
-  checkInt("retrieval.ivf_train_frames", retrieval.ivf_train_frames, 64, kMaxFrames);
+  checkSettingRanges(*this);
   if (retrieval.method == RetrievalMethod::kIvf && !internal::ivfAvailable()) {
     throw ConfigError("retrieval.method",
                       "retrieval.method: ivf needs sgtllc built with FAISS (install libfaiss-dev and configure again)");
   }
-  checkReal("association.sigma_1", association.sigma_1, {-1.0}, {1.0});
-  checkReal("association.max_delta_aj", association.max_delta_aj, {0.0, false}, {1.0e6});
   // S is a share of slots with score ratio and a count of them (at most C² = 49 for the seven classes) with
   // score count.
   const bool count = association.score == NodeScore::kCount;
@@ -137,37 +116,26 @@ void Config::validate() const {
     throw ConfigError("association.entries", "association.entries must keep at least one of the v_i, v_j, v_k entries");
   }
   const VerificationConfig& v = verification;
-  checkReal("verification.sigma_3", v.sigma_3, {0.0}, {1.0});
-  checkInt("verification.min_associations", v.min_associations, 1, kMaxGraphNodes);
-  checkInt("verification.ransac_iterations", v.ransac_iterations, 1, 10000);
-  checkInt("verification.ransac_sample_size", v.ransac_sample_size, 3, 100);  // a rigid fit needs 3 points
-  checkReal("verification.inlier_threshold", v.inlier_threshold, {0.0, false}, {10.0});
-  checkInt("verification.min_inliers", v.min_inliers, 1, kMaxGraphNodes);
-  checkReal("verification.min_inlier_fraction", v.min_inlier_fraction, {0.0}, {1.0});
-  checkReal("verification.ransac_confidence", v.ransac_confidence, {0.0, false}, {1.0});
-  checkReal("verification.max_tilt_deg", v.max_tilt_deg, {1.0}, {180.0});
-  checkReal("verification.sigma_4", v.sigma_4, {0.0}, {1.0});
-  checkReal("verification.select_margin", v.select_margin, {0.0}, {1.0});
-  checkReal("verification.lateral_distance", v.lateral_distance, {0.0, false}, {1000.0});
-  checkInt("verification.neighbour_frames", v.neighbour_frames, 0, 50);
-  checkReal("verification.offset_decay_start", v.offset_decay_start, {0.0}, {1000.0});
-  checkReal("verification.offset_decay_end", v.offset_decay_end, {0.0}, {1000.0});
   if (v.offset_decay_end > 0.0 && v.offset_decay_end <= v.offset_decay_start) {
     throw ConfigError("verification.offset_decay_end",
                       "verification.offset_decay_end = " + text(v.offset_decay_end) +
                           " must be 0 (no decay) or greater than verification.offset_decay_start = " +
                           text(v.offset_decay_start));
   }
-  checkInt("verification.consistency_pairs", v.consistency_pairs, 0, 16);
-  checkInt("verification.weak_inliers", v.weak_inliers, 0, 1000);
-  checkReal("verification.weak_min_footprint", v.weak_min_footprint, {0.0}, {1.0});
-  checkReal("verification.min_footprint_overlap", v.min_footprint_overlap, {0.0}, {1.0});
-  checkReal("verification.footprint_cell", v.footprint_cell, {0.2}, {10.0});
-  checkReal("verification.footprint_radius", v.footprint_radius, {5.0}, {200.0});
-  validateRegistrationConfig(registration);
-  validateLabellerConfig(labeller, labels);
-  checkInt("threads", threads, 1, kMaxThreads);
-  validateBackendConfig(backend);
+  for (uint32_t id : registration.ground_ids) {
+    if (id > 0xFFFFu) {
+      throw ConfigError("registration.ground_ids",
+                        "registration.ground_ids: " + std::to_string(id) + " is not a raw id 0..65535");
+    }
+  }
+  validateLabellerRules(labeller, labels);
+}
+
+/// The back end's settings alone, by the same table and messages as Config::validate().
+void backend::BackendConfig::validate() const {
+  Config config;
+  config.backend = *this;
+  checkSettingRanges(config, "backend.");
 }
 
 }  // namespace sgtllc
