@@ -7,6 +7,7 @@
 #include "bindings.h"
 #include "opaque.h"
 #include "settings.h"
+#include "sgtllc/io/config_reference.h"
 #include "sgtllc/io/config_yaml.h"
 
 namespace sgtllc::python {
@@ -129,6 +130,8 @@ void bindConfig(py::module_& m) {
       .def_static("from_yaml_string", &io::parseConfig, py::arg("yaml"), py::arg("source") = "<config>",
                   "Parses YAML text; errors name `source`, the line and the key.")
       .def("to_yaml", &io::configToYaml, "The whole configuration as commented YAML (from_yaml reads it back).")
+      .def("reference", &io::configReference,
+           "Every setting as Markdown tables: key, value, accepted values, meaning (`sgtllc config --markdown`).")
       .def("__copy__", [](const Config& c) { return Config(c); })
       .def("__deepcopy__", [](const Config& c, const py::dict&) { return Config(c); }, py::arg("memo"))
       .def("__eq__", [](const Config& a, const Config& b) { return io::configToYaml(a) == io::configToYaml(b); })

@@ -98,3 +98,13 @@ def test_copy_is_independent():
     detector = sgtllc.LoopDetector(c)
     c.graph.sigma_d = 12.0
     assert detector.config.graph.sigma_d == 30.0
+
+
+def test_reference_lists_every_setting_with_its_value_and_range():
+    c = sgtllc.Config()
+    c.verification.sigma_4 = 0.25
+    text = c.reference()
+    assert "| `verification.sigma_4` | `0.25` | [0, 1] |" in text
+    assert "| `labeller.source` | `file` | `file`, `geometric`, `hybrid` |" in text
+    # The property's docstring carries the same range.
+    assert "in [0, 1]" in sgtllc.VerificationConfig.sigma_4.__doc__

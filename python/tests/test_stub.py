@@ -49,3 +49,37 @@ def test_stub_lists_every_binding():
             continue
         stub = stub_members - {"__init__", "__len__"}
         assert stub == bound, name
+
+
+def stub_annotations():
+    tree = ast.parse(STUB.read_text())
+    out = {}
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            out[node.name] = {item.target.id: ast.unparse(item.annotation)
+                              for item in node.body if isinstance(item, ast.AnnAssign)}
+    return out
+
+
+def python_type(value):
+    if isinstance(value, tuple):
+        return "Tuple[int, ...]"
+    return type(value).__name__
+
+
+def test_settings_have_the_stub_type_of_their_value():
+    # The settings properties come from the settings table (each docstring names its YAML key); the stub must give
+    # each the type of its value, so a setting added to the table without its stub line fails here.
+    annotations = stub_annotations()
+    checked = 0
+    for name, members in annotations.items():
+        cls = getattr(sgtllc, name, None)
+        if not inspect.isclass(cls):
+            continue
+        for field, prop in vars(cls).items():
+            if not isinstance(prop, property) or "(YAML " not in (prop.__doc__ or ""):
+                continue
+            default = getattr(cls(*([] if name != "ClassClusterConfig" else [])), field)
+            assert members.get(field) == python_type(default), f"{name}.{field}: stub {members.get(field)}"
+            checked += 1
+    assert checked >= 120
