@@ -134,6 +134,7 @@ class SegmentRuleConfig:
     min_voxel_points: int
     pole_max_width: float
     pole_min_height: float
+    pole_min_top: float
     pole_slice_low: float
     pole_slice_high: float
     pole_min_span: float

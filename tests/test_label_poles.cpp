@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "sgtllc/label/geometric_labeller.h"
@@ -172,6 +173,17 @@ TEST(PoleSlices, AThinUprightMustStandTallerThanAPersonOrReachTheViewsTop) {
   // 3 m away the top counts from 1.73 + 3 · 0.045 = 1.87 m: an upright seen up to 1.9 m may be taller than what is
   // seen, and is a pole.
   EXPECT_DOUBLE_EQ(found(3.0f, 1.9f), 1.0);
+  // The height is labeller.segments.pole_min_top: at 1.8 m the 1.9 m upright 10 m away is a pole; a 2.3 m one 15 m
+  // away (below the view's top there, 1.73 + 15 · 0.045 = 2.41 m) is a pole at 2.2 m and not at 2.4 m.
+  EXPECT_DOUBLE_EQ(found(15.0f, 2.3f), 1.0);
+  LabellerConfig low, high;
+  low.segments.pole_min_top = 1.8;
+  high.segments.pole_min_top = 2.4;
+  for (const auto& [config, x, top, expected] :
+       {std::tuple{low, 10.0f, 1.9f, 1.0}, std::tuple{high, 15.0f, 2.3f, 0.0}}) {
+    const TrunkScene s = postBeforeAWall(x, top);
+    EXPECT_DOUBLE_EQ(trunkFound(s, label::GeometricLabeller(config).classify(s.points), 0.25f, top), expected);
+  }
 }
 
 TEST(PoleSlices, PeopleOfKitti00AreNotPoles) {

@@ -28,6 +28,8 @@ void addLabellerSettings(std::vector<Setting>* out) {
   s.number("min_voxel_points", &S::min_voxel_points, "[3, 1000]", "", "a voxel's own shape counts from this many points");
   s.number("pole_max_width", &S::pole_max_width, "(0, 100]", "m", "a pole segment is at most this wide");
   s.number("pole_min_height", &S::pole_min_height, "(0, 100]", "m", "... and at least this tall");
+  s.number("pole_min_top", &S::pole_min_top, "(0, 100]", "m",
+           "a pole reaches this high above the ground, or the top of the sensor's view");
   s.number("pole_slice_low", &S::pole_slice_low, "[0, 100]", "m", "the pole slice starts this high above the ground");
   // Config::validate also asks for pole_slice_high > pole_slice_low.
   s.number("pole_slice_high", &S::pole_slice_high, "(0, 100]", "m", "... and ends this high");

@@ -32,8 +32,8 @@ struct SegmentSummary {
   int wall_voxels = 0;
   int scattered_voxels = 0;
   bool at_view_top = false;  // a point within kViewTopMargin of the view's top
-  /// Taller than a person, or cut by the view's top (kPoleMinTop).
-  bool standing() const { return top >= kPoleMinTop || at_view_top; }
+  /// Taller than a person, or cut by the view's top (SegmentRuleConfig::pole_min_top).
+  bool standing(const SegmentRuleConfig& r) const { return top >= r.pole_min_top || at_view_top; }
 };
 
 int8_t classOf(const SegmentSummary& s, const SegmentRuleConfig& r) {
@@ -44,7 +44,7 @@ int8_t classOf(const SegmentSummary& s, const SegmentRuleConfig& r) {
   const double shaped = std::max(1, s.shaped_voxels);
   const double wall_share = s.wall_voxels / shaped;
   const double scatter_share = s.scattered_voxels / shaped;
-  if (length <= r.pole_max_width && height >= r.pole_min_height && s.standing()) return kPole;  // trunk and pole
+  if (length <= r.pole_max_width && height >= r.pole_min_height && s.standing(r)) return kPole;  // trunk and pole
   // Tall segments reach above a car's roof: walls (building) or, without walls, crowns and hedges (vegetation).
   // A 64-beam sensor 1.73 m up with +2° of upward view sees only ~2.4 m of a wall 20 m away, so "tall" is low.
   if (s.top >= r.building_min_top) {
@@ -134,7 +134,7 @@ Labelling GeometricLabeller::classify(const std::vector<Eigen::Vector3f>& points
     out.classes[i] = segment_class[seg.voxel_segment[v]];
   }
   std::vector<uint8_t> standing(segments.size());
-  for (size_t k = 0; k < segments.size(); ++k) standing[k] = segments[k].standing();
+  for (size_t k = 0; k < segments.size(); ++k) standing[k] = segments[k].standing(rules);
   markPoles(points, ground.height, seen_whole ? &use : nullptr, view_top, standing, rules, &out);
   out.ground = std::move(ground.ground);
   return out;

@@ -115,7 +115,7 @@ void markPoles(const std::vector<Eigen::Vector3f>& points, const std::vector<flo
     const int s = out->segment[i];
     if (s < 0 || segment_axes[s].empty()) continue;
     const Eigen::Vector3f& p = points[i];
-    if (height[i] < kPoleMinTop && !atViewTop(p, view_top)) continue;
+    if (height[i] < r.pole_min_top && !atViewTop(p, view_top)) continue;
     for (Axis& axis : segment_axes[s]) axis.standing = axis.standing || within(i, axis);
   }
   for (size_t i = 0; i < n; ++i) {

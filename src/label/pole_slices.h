@@ -13,12 +13,10 @@
 
 namespace sgtllc::label {
 
-/// A pole or trunk stands taller than a person: it reaches kPoleMinTop above the ground, or the top of the
+/// A pole or trunk stands taller than a person: it reaches pole_min_top above the ground, or the top of the
 /// sensor's view (within kViewTopMargin of the slope that kViewTopShare of the non-ground points reach), where what
-/// it reaches is the view's end, not its own. A person (1.6–1.9 m, on a kerb a little above the ground estimate) is
-/// a thin upright too, and is gone at the next visit. The margin is wide because KITTI's highest beams lie a degree
-/// or more apart in elevation around the azimuth (docs/labeller.md §4, "Standing taller than a person").
-constexpr float kPoleMinTop = 2.2f;
+/// it reaches is the view's end, not its own. The margin is wide because KITTI's highest beams lie a degree or more
+/// apart in elevation around the azimuth (docs/labeller.md §4, "Standing taller than a person").
 constexpr double kViewTopShare = 0.001;
 constexpr float kViewTopMargin = 0.035f;  // a slope of about 2 degrees
 /// A pole is seen whole if, within kBeside m beside each side of it, at most pole_max_occluded of the points lie
@@ -36,7 +34,7 @@ inline bool atViewTop(const Eigen::Vector3f& p, float view_top) {
 /// segmented on their own, and again kUpperSliceLift higher; a slice component that is thin (4 std devs ≤
 /// pole_max_width), spans pole_min_span of height and is seen whole against the points flagged in @p seen (none:
 /// every thin component is) is a pole section. If the points of its segment within pole_radius of its axis, at any
-/// height, reach kPoleMinTop or @p view_top, those up to kPoleAboveSlice above its slice become kPole in @p out.
+/// height, reach pole_min_top or @p view_top, those up to kPoleAboveSlice above its slice become kPole in @p out.
 /// @p standing flags the segments that reach either at all; the others' points are left out of the slices, as no
 /// pole can stand in them (cars, people, low bushes: a quarter or more of a street's slice points).
 /// After the slicing pole extraction of Schaefer et al., "Long-term urban vehicle localization using pole

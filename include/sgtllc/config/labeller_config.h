@@ -39,6 +39,10 @@ struct SegmentRuleConfig {
   int min_voxel_points = 5;      ///< a voxel's own shape (planar/scattered) counts from this many points
   double pole_max_width = 1.0;   ///< a pole segment's horizontal extent (m, 4 standard deviations) at most
   double pole_min_height = 1.5;  ///< ... and its vertical extent at least (m)
+  /// A pole or trunk stands taller than a person: it reaches this high above the ground (m; a slice section's
+  /// column does), or the top of the sensor's view. A person is a thin upright too, and is gone at the next visit
+  /// (docs/labeller.md §4, "Standing taller than a person"); 2.2 m comes from a person's height, not from tuning.
+  double pole_min_top = 2.2;
   /// Poles inside larger segments: the slice pole_slice_low..pole_slice_high (m above the ground) is segmented
   /// alone in voxels of pole_voxel (m); a thin component that spans pole_min_span (m) of height marks the points
   /// of its segment within pole_radius (m) of its axis as pole.
