@@ -76,13 +76,13 @@ class DescriptorConfig:
     order: SubVectorOrder
     global_mode: GlobalMode
 class RetrievalConfig:
+    key: RetrievalKey
+    histogram_bins: int
+    histogram_range: float
     num_candidates: int
     exclude_recent: int
     warmup_frames: int
     method: RetrievalMethod
-    key: RetrievalKey
-    histogram_bins: int
-    histogram_range: float
     ivf_lists: int
     ivf_probe: int
     ivf_train_frames: int
@@ -101,16 +101,15 @@ class VerificationConfig:
     inlier_threshold: float
     min_inliers: int
     min_inlier_fraction: float
+    use_ransac: bool
     ransac_confidence: float
     score_formula: ScoreFormula
+    max_tilt_deg: float
     guided_matching: bool
     consistency_pairs: int
     weak_inliers: int
     weak_min_footprint: float
-    max_tilt_deg: float
-    use_ransac: bool
     sigma_4: float
-    seed: int
     select_margin: float
     lateral_distance: float
     neighbour_frames: int
@@ -119,6 +118,7 @@ class VerificationConfig:
     min_footprint_overlap: float
     footprint_cell: float
     footprint_radius: float
+    seed: int
 class GroundConfig:
     sectors: int
     bin: float
@@ -156,6 +156,7 @@ class LabellerConfig:
 class RegistrationConfig:
     pair: bool
     online: bool
+    ground_ids: Tuple[int, ...]
     voxel: float
     max_points: int
     match_voxel: float
@@ -171,7 +172,6 @@ class RegistrationConfig:
     max_rotation_change_deg: float
     information_sigma_min: float
     information_scale: float
-    ground_ids: Tuple[int, ...]
 class OdometryNoise:
     translation_sigma_per_m: float
     translation_sigma_min: float
@@ -200,9 +200,9 @@ class BackendConfig:
     loops: LoopNoise
     loop_loss: RobustLoss
     loss_scale: float
-    consistency: LoopConsistency
     max_loop_chi2: float
     max_rejection_rounds: int
+    consistency: LoopConsistency
     solver: SolverSettings
     online: OnlineSettings
     def validate(self) -> None: ...
