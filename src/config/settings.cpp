@@ -89,19 +89,38 @@ std::string Setting::comment() const {
   return c;
 }
 
+namespace {
+
+/// The settings before and after the cluster.NAME sections, which follow the class set; built once, as
+/// Config::validate() runs on every comparePair call.
+struct FixedSettings {
+  std::vector<Setting> head, tail;
+};
+
+const FixedSettings& fixedSettings() {
+  static const FixedSettings fixed = [] {
+    FixedSettings f;
+    addLabelSettings(&f.head);
+    addLabellerSettings(&f.head);
+    addStageSettings(&f.tail);
+    addVerificationSettings(&f.tail);
+    addRegistrationSettings(&f.tail);
+    SectionTable<Config>("", [](Config& c) -> Config& { return c; }, &f.tail)
+        .number("threads", &Config::threads, "[1, " + std::to_string(kMaxThreads) + "]", "",
+                "worker threads for candidate verification; results do not depend on it");
+    addBackendSettings(&f.tail);
+    return f;
+  }();
+  return fixed;
+}
+
+}  // namespace
+
 std::vector<Setting> settingsFor(const LabelConfig& labels) {
-  std::vector<Setting> s;
-  s.reserve(160);
-  addLabelSettings(&s);
-  addLabellerSettings(&s);
+  const FixedSettings& fixed = fixedSettings();
+  std::vector<Setting> s = fixed.head;
   addClusterSettings(labels, &s);
-  addStageSettings(&s);
-  addVerificationSettings(&s);
-  addRegistrationSettings(&s);
-  SectionTable<Config>("", [](Config& c) -> Config& { return c; }, &s)
-      .number("threads", &Config::threads, "[1, " + std::to_string(kMaxThreads) + "]", "",
-              "worker threads for candidate verification; results do not depend on it");
-  addBackendSettings(&s);
+  s.insert(s.end(), fixed.tail.begin(), fixed.tail.end());
   return s;
 }
 
@@ -119,14 +138,21 @@ std::vector<Setting> settingsOfSection(std::type_index section) {
 }
 
 void checkSettingRanges(const Config& config, const std::string& prefix) {
-  for (const Setting& s : settingsFor(config.labels)) {
-    if (s.type != SettingType::kReal && s.type != SettingType::kInteger) continue;
-    if (s.key.compare(0, prefix.size(), prefix) != 0) continue;
-    const double v = s.value(config);
-    if (!s.range.accepts(v)) {
-      outOfRange(s.key, s.type == SettingType::kInteger ? text(static_cast<long long>(v)) : text(v), s.range.text());
+  const auto check = [&](const std::vector<Setting>& settings) {
+    for (const Setting& s : settings) {
+      if (s.type != SettingType::kReal && s.type != SettingType::kInteger) continue;
+      if (s.key.compare(0, prefix.size(), prefix) != 0) continue;
+      const double v = s.value(config);
+      if (!s.range.accepts(v)) {
+        outOfRange(s.key, s.type == SettingType::kInteger ? text(static_cast<long long>(v)) : text(v), s.range.text());
+      }
     }
-  }
+  };
+  std::vector<Setting> cluster;
+  addClusterSettings(config.labels, &cluster);
+  check(fixedSettings().head);
+  check(cluster);
+  check(fixedSettings().tail);
 }
 
 }  // namespace sgtllc
