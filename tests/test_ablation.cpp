@@ -5,7 +5,7 @@
 #include "sgtllc/association.h"
 #include "sgtllc/detector.h"
 #include "sgtllc/global_descriptor.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -18,7 +18,7 @@
 #include "sgtllc/io/pcd.h"
 #include "test_cli_support.h"
 #include "test_node_files_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

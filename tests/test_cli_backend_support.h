@@ -15,7 +15,7 @@
 #include "sgtllc/io/loops_csv.h"
 #include "sgtllc/io/trajectory.h"
 #include "test_cli_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc::test {
 

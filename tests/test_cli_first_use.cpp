@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "test_cli_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc::test {
 namespace {

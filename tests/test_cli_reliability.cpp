@@ -12,7 +12,7 @@
 #include "sgtllc/eval/report.h"
 #include "sgtllc/io/output_file.h"
 #include "test_cli_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "test_cli_support.h"
 #include "test_scan_folder_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

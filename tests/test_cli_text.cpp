@@ -12,7 +12,7 @@
 #include "sgtllc/io/loops_csv.h"
 #include "test_cli_support.h"
 #include "test_node_files_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -11,7 +11,7 @@
 #include "sgtllc/frame.h"
 #include "sgtllc/node_extraction.h"
 #include "sgtllc/verification.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -17,7 +17,7 @@
 #include "sgtllc/graph.h"
 #include "sgtllc/node_extraction.h"
 #include "test_graph_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace {
 

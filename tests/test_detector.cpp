@@ -8,7 +8,7 @@
 
 #include "sgtllc/detector.h"
 #include "sgtllc/retrieval/retrieval_key.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -10,7 +10,7 @@
 #include "sgtllc/eval/pair_eval.h"
 #include "sgtllc/eval/report.h"
 #include "test_node_files_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc::eval {
 namespace {

@@ -14,7 +14,7 @@
 #include "sgtllc/eval/metric_text.h"
 #include "sgtllc/eval/report.h"
 #include "test_cli_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc::eval {
 namespace {

@@ -13,7 +13,7 @@
 #include "sgtllc/eval/report.h"
 #include "sgtllc/pipeline/frame_source.h"
 #include "test_cli_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc::eval {
 namespace {

@@ -18,7 +18,7 @@
 #include "test_cli_support.h"
 #include "test_graph_support.h"
 #include "test_io_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "sgtllc/detector.h"
 #include "sgtllc/footprint.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

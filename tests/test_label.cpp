@@ -17,7 +17,7 @@
 #include "sgtllc/label/segmentation.h"
 #include "sgtllc/label/shape_features.h"
 #include "sgtllc/parallel.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

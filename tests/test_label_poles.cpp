@@ -14,7 +14,7 @@
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/label/view_ceiling.h"
 #include "sgtllc/labels.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -9,7 +9,7 @@
 #include "sgtllc/map/map_format.h"
 #include "sgtllc/map/relocalizer.h"
 #include "test_map_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/memory_reuse.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 // AddressSanitizer and MemorySanitizer replace glibc's allocator, and their mallopt refuses every setting.
 #if defined(__SANITIZE_ADDRESS__)

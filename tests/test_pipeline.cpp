@@ -7,7 +7,7 @@
 #include "sgtllc/backend/information.h"
 #include "sgtllc/io/trajectory.h"
 #include "sgtllc/pipeline/loop_closing_pipeline.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

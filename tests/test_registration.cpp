@@ -11,7 +11,7 @@
 #include "sgtllc/registration/icp.h"
 #include "sgtllc/registration/registration_cloud.h"
 #include "sgtllc/clustering.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

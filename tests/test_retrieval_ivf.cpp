@@ -12,7 +12,7 @@
 #include "sgtllc/map/map_format.h"
 #include "sgtllc/node_extraction.h"
 #include "test_places_support.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace {
 

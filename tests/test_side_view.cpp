@@ -9,7 +9,7 @@
 #include "sgtllc/label/geometric_labeller.h"
 #include "sgtllc/label/side_view.h"
 #include "sgtllc/labels.h"
-#include "test_support.h"
+#include "test_kitti_support.h"
 
 namespace sgtllc {
 namespace {

@@ -1,29 +1,20 @@
-// Helpers shared by the test suites: bundled data paths, rigid transforms, pose errors.
+// Helpers shared by the test suites: bundled data paths, rigid transforms, pose errors (the bundled KITTI scans:
+// test_kitti_support.h).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
-#include "sgtllc/io/kitti.h"
-#include "sgtllc/io/nodes.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::test {
 
 inline std::string dataPath(const std::string& relative) { return std::string(SGTLLC_DATA_DIR) + "/" + relative; }
-
-/// A bundled KITTI 00 scan with its SemanticKITTI labels, e.g. kittiScan("004501").
-inline LabeledCloud kittiScan(const std::string& frame) {
-  return io::readLabeledScan(dataPath("kitti/00/velodyne/" + frame + ".bin"),
-                             dataPath("kitti/00/labels/" + frame + ".label"));
-}
 
 /// Rigid transform from yaw, pitch, roll (degrees) and a translation (m).
 inline Eigen::Matrix4d rigid(double yaw_deg, double pitch_deg, double roll_deg, const Eigen::Vector3d& t) {
@@ -69,51 +60,6 @@ inline PoseError poseError(const Eigen::Matrix4d& estimate, const Eigen::Matrix4
   const Eigen::Matrix3d dR = estimate.topLeftCorner<3, 3>().transpose() * reference.topLeftCorner<3, 3>();
   const double c = std::clamp((dR.trace() - 1.0) / 2.0, -1.0, 1.0);
   return {(estimate.topRightCorner<3, 1>() - reference.topRightCorner<3, 1>()).norm(), std::acos(c) * 180.0 / M_PI};
-}
-
-/// Writes a SemanticKITTI-layout sequence of 54 frames into @p dir: the real scans 52 and 88, 50 frames
-/// without any stable class (one road point), 850, and 4501 (frame 53, a revisit of frame 0 2.96 m away).
-/// poses.txt gives the real KITTI poses of the real scans and far-away poses (> 1 km) to the padding frames;
-/// calib.txt is KITTI 00's.
-inline void makePlantedSequence(const std::string& dir) {
-  namespace fs = std::filesystem;
-  fs::create_directories(fs::path(dir) / "velodyne");
-  fs::create_directories(fs::path(dir) / "labels");
-  const std::vector<Eigen::Matrix4d> kitti = io::readKittiPoses(dataPath("kitti/00/poses.txt"));
-  std::ofstream poses(fs::path(dir) / "poses.txt");
-  poses.precision(17);
-  int index = 0;
-  auto add = [&](const std::string& bin, const std::string& label, const Eigen::Matrix4d& pose) {
-    char name[16];
-    std::snprintf(name, sizeof(name), "%06d", index++);
-    fs::copy_file(bin, fs::path(dir) / "velodyne" / (std::string(name) + ".bin"));
-    fs::copy_file(label, fs::path(dir) / "labels" / (std::string(name) + ".label"));
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 4; ++c) poses << pose(r, c) << (r == 2 && c == 3 ? "\n" : " ");
-    }
-  };
-  auto real = [&](int frame) {
-    char name[16];
-    std::snprintf(name, sizeof(name), "%06d", frame);
-    add(dataPath("kitti/00/velodyne/" + std::string(name) + ".bin"),
-        dataPath("kitti/00/labels/" + std::string(name) + ".label"), kitti.at(static_cast<size_t>(frame)));
-  };
-  real(52);
-  real(88);
-  const std::string one_bin = (fs::path(dir) / "one.bin").string(), one_label = (fs::path(dir) / "one.label").string();
-  std::ofstream(one_bin, std::ios::binary).write("\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0", 16);
-  const uint32_t road = 40;
-  std::ofstream(one_label, std::ios::binary).write(reinterpret_cast<const char*>(&road), 4);
-  for (int k = 0; k < 50; ++k) {
-    Eigen::Matrix4d far = Eigen::Matrix4d::Identity();
-    far(0, 3) = 2000.0 + 100.0 * k;
-    add(one_bin, one_label, far);
-  }
-  fs::remove(one_bin);
-  fs::remove(one_label);
-  real(850);
-  real(4501);
-  fs::copy_file(dataPath("kitti/00/calib.txt"), fs::path(dir) / "calib.txt");
 }
 
 /// ICP-refined reference T_a_b, a = 000052, b = 004501 (data/kitti/00/README.md, from the KITTI GT poses refined
