@@ -19,32 +19,31 @@ struct RegistrationConfig {
   /// Raw label ids (labels.preset's convention, 0..65535) whose points join the stable-class points in the
   /// registration clouds only (never the graph). Default: SemanticKITTI's road 40, parking 44, sidewalk 48 and
   /// other-ground 49 (the geometric labeller writes its ground as 40). Walls, trunks and poles fix x, y and yaw but
-  /// barely height, roll and pitch; the ground fixes those: on urban11's loops the height error fell from 2.3 to
-  /// 0.2 cm (docs/registration.md). Empty = the stable classes alone. Set the ground ids of other presets here.
+  /// barely height, roll and pitch; the ground fixes those (docs/registration.md, "Points"). Empty = the stable
+  /// classes alone. Set the ground ids of other presets here.
   std::vector<uint32_t> ground_ids = {40, 44, 48, 49};
-  /// Voxel leaf (m) of the query (source) scan's points: the points that are moved. 0.3 m and 8,000
-  /// points against 0.5 m and 4,000: urban11's loops 0.55 → 0.42 cm, KITTI 00 4501 → 52 1.05 → 0.37 cm from the
-  /// reference, at about twice the ICP time.
+  /// Voxel leaf (m) of the query (source) scan's points: the points that are moved. Finer than the first 0.5 m
+  /// for a finer pose at about twice the ICP time (BENCHMARKS.md, "Fine registration").
   double voxel = 0.3;
   /// Most query points kept after downsampling; beyond it an even stride over the voxels.
   int max_points = 8000;
   /// Voxel leaf (m) of the match (target) scan's stable-class points, whose planes the query points meet: finer,
   /// so a plane's normal and offset come from many points.
   double match_voxel = 0.2;
-  /// Most match points kept. Online, every frame keeps its match cloud: at most 6 · this bytes
-  /// (60 KB). On urban11's loops 10,000 were as accurate as 20,000 at half the store and ICP time.
+  /// Most match points kept. Online, every frame keeps its match cloud: at most 6 · this bytes (60 KB); twice
+  /// as many were no more accurate (BENCHMARKS.md, "Fine registration").
   int match_max_points = 10000;
   /// Neighbours (the point included) whose covariance gives a target point's normal.
   int normal_neighbors = 10;
-  /// A source point pairs with its nearest target point only if it lies this close (m), 3-D distance.
-  /// Pairs farther apart join different surfaces: on urban11's loops 1 m left 2.7 cm, 0.5 m 1.6 cm and 0.3 m
-  /// 1.2 cm (ground left out; with the ground 0.9 → 0.6 cm). The SVD seed is within a few cm.
+  /// A source point pairs with its nearest target point only if it lies this close (m), 3-D distance: pairs
+  /// farther apart join different surfaces (docs/registration.md, "ICP"); the coarse stage brings the seed within
+  /// reach.
   double max_correspondence = 0.3;
   /// Pairing distance (m) of a first, coarse ICP stage before the stage at max_correspondence; no coarse stage if
   /// not above max_correspondence. A seed from a few node centres can be a metre and some degrees off.
   double coarse_correspondence = 1.0;
-  /// Scale k (m) of the Cauchy weight 1 / (1 + r²/k²) on point-to-plane residuals r; 0 = unweighted. (On
-  /// KITTI 00 4501 → 52, k = 0.1 m moved the result away from the ICP reference: 0.4 → 1.1 cm.)
+  /// Scale k (m) of the Cauchy weight 1 / (1 + r²/k²) on point-to-plane residuals r; 0 = unweighted (a weight
+  /// moved KITTI 00 4501 → 52 away from the ICP reference: docs/registration.md, "ICP").
   double kernel = 0.0;
   /// Gauss-Newton iterations at most.
   int max_iterations = 30;
