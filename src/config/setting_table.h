@@ -29,25 +29,16 @@ class SectionTable {
   /// A double, int or uint32 member with its range ("[0, 1]") and unit ("" for counts and shares).
   template <class T>
   void number(const char* name, T S::*member, const std::string& range, const char* unit, const char* meaning) {
-    Setting s = base(name, std::is_floating_point<T>::value ? SettingType::kReal : SettingType::kInteger, meaning,
-                     unit, typeid(T));
-    s.range = parseRange(range);
-    if (!std::is_floating_point<T>::value) {
-      s.storage_lo = static_cast<double>(std::numeric_limits<T>::min());
-      s.storage_hi = static_cast<double>(std::numeric_limits<T>::max());
-    }
-    s.get = [member](const void* x) { return static_cast<double>(static_cast<const S*>(x)->*member); };
-    s.set = [member](void* x, double v) { static_cast<S*>(x)->*member = static_cast<T>(v); };
-    out_->push_back(std::move(s));
+    numberIn(name, member, parseRange(range), unit, meaning);
   }
 
   /// A number whose range depends on other settings, checked by Config::validate's own rules; @p note says how.
   template <class T>
   void ruledNumber(const char* name, T S::*member, const char* note, const char* unit, const char* meaning) {
-    number(name, member, "[0, 0]", unit, meaning);
-    out_->back().range = SettingRange{};
-    out_->back().range.checked = false;
-    out_->back().range.note = note;
+    SettingRange range;
+    range.checked = false;
+    range.note = note;
+    numberIn(name, member, range, unit, meaning);
   }
 
   void flag(const char* name, bool S::*member, const char* meaning) {
@@ -80,6 +71,20 @@ class SectionTable {
   }
 
  private:
+  template <class T>
+  void numberIn(const char* name, T S::*member, SettingRange range, const char* unit, const char* meaning) {
+    Setting s = base(name, std::is_floating_point<T>::value ? SettingType::kReal : SettingType::kInteger, meaning,
+                     unit, typeid(T));
+    s.range = std::move(range);
+    if (!std::is_floating_point<T>::value) {
+      s.storage_lo = static_cast<double>(std::numeric_limits<T>::min());
+      s.storage_hi = static_cast<double>(std::numeric_limits<T>::max());
+    }
+    s.get = [member](const void* x) { return static_cast<double>(static_cast<const S*>(x)->*member); };
+    s.set = [member](void* x, double v) { static_cast<S*>(x)->*member = static_cast<T>(v); };
+    out_->push_back(std::move(s));
+  }
+
   Setting base(const char* name, SettingType type, const char* meaning, const char* unit, const std::type_info& t) {
     Setting s;
     s.key = prefix_.empty() ? name : prefix_ + "." + name;
