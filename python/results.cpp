@@ -35,12 +35,20 @@ void bindResults(py::module_& m) {
       .value("FEW_ASSOCIATIONS", Rejection::kFewAssociations, "score_c < σ_3 or |LA| < min_associations")
       .value("RANSAC_FAILED", Rejection::kRansacFailed, "no hypothesis reached min_inliers")
       .value("FOOTPRINT_MISMATCH", Rejection::kFootprint,
-             "the pose puts too few of the query's structure cells on the match's (footprint check)");
+             "the pose puts too few of the query's structure cells on the match's (footprint check)")
+      .value("SEEN_THROUGH", Rejection::kSeenThrough,
+             "under the pose, one sensor saw through too much of what the other saw (seen-through check)");
+  py::class_<SeenThrough>(m, "SeenThrough", "The seen-through check of a verified pose (sight.h).")
+      .def_readonly("judged", &SeenThrough::judged,
+                    "nearest returns of both frames within the other's sight (0: the check did not run)")
+      .def_readonly("seen_through", &SeenThrough::seen_through, "of those, the ones the other sensor saw through")
+      .def_property_readonly("share", &SeenThrough::share, "seen_through / judged (0 if none judged)");
 
   py::class_<FootprintOverlap>(m, "FootprintOverlap", "The footprint check of a verified pose.")
       .def_readonly("compared", &FootprintOverlap::compared,
                     "query structure cells compared (0: the check did not run)")
-      .def_readonly("share", &FootprintOverlap::share, "share of them on or next to a match structure cell");
+      .def_readonly("share", &FootprintOverlap::share, "share of them on or next to a match structure cell")
+      .def_readonly("seen", &FootprintOverlap::seen, "the two frames' sights under the pose (SeenThrough)");
   py::enum_<Search>(m, "Search", "Whether a frame's query searched the database, or why not.")
       .value("SEARCHED", Search::kSearched, "older frames existed and were searched")
       .value("TOO_RECENT", Search::kTooRecent, "no stored frame is retrieval.exclude_recent or more frames older")

@@ -116,6 +116,7 @@ class VerificationConfig:
     offset_decay_start: float
     offset_decay_end: float
     min_footprint_overlap: float
+    max_seen_through: float
     footprint_cell: float
     footprint_radius: float
     seed: int
@@ -230,11 +231,17 @@ class Config:
 
 # --- results (results.cpp) ---
 class Rejection(Enum):
-    NONE: int; FEW_ASSOCIATIONS: int; RANSAC_FAILED: int; FOOTPRINT_MISMATCH: int
+    NONE: int; FEW_ASSOCIATIONS: int; RANSAC_FAILED: int; FOOTPRINT_MISMATCH: int; SEEN_THROUGH: int
 
+class SeenThrough:
+    judged: int
+    seen_through: int
+    @property
+    def share(self) -> float: ...
 class FootprintOverlap:
     compared: int
     share: float
+    seen: SeenThrough
 class Search(Enum):
     SEARCHED: int; TOO_RECENT: int; WARMUP: int
 class StageTimes:

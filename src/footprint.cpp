@@ -38,6 +38,7 @@ Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, co
     const size_t k = static_cast<size_t>(i) * static_cast<size_t>(side) + static_cast<size_t>(j);
     f.bits[k >> 6] |= uint64_t{1} << (k & 63u);
   }
+  f.sight = computeSight(cloud.points);
   return f;
 }
 
@@ -89,6 +90,7 @@ FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match
     }
   }
   o.share = o.compared > 0 ? static_cast<double>(hits) / o.compared : 0.0;
+  o.seen = seenThrough(query.sight, match.sight, T_match_query);
   return o;
 }
 

@@ -19,6 +19,8 @@ const char* rejectionName(Rejection r) {
       return "ransac_failed";
     case Rejection::kFootprint:
       return "footprint_mismatch";
+    case Rejection::kSeenThrough:
+      return "seen_through";
   }
   return "?";
 }
@@ -76,6 +78,9 @@ void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, 
 /// Fewest query cells the footprint check compares before it judges: a scan of open fields or one whose pose
 /// leaves it mostly outside the match's reach says too little either way.
 constexpr int kMinFootprintCells = 20;
+/// Fewest nearest returns (of both frames) the seen-through check judges before it judges the pose: a scan of
+/// open fields, or two whose sights barely overlap under the pose.
+constexpr int kMinSightReturns = 40;
 
 /// The footprint check (algorithm §7.7): a pose under which the structure around the nodes does not agree is not
 /// a revisit, however many nodes agree.
@@ -87,8 +92,16 @@ void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, c
   // structure around it to agree more (BENCHMARKS.md, "Weak evidence").
   const bool weak = result->by_consistency || static_cast<int>(result->inliers.size()) <= vc.weak_inliers;
   const double needed = weak ? std::max(vc.min_footprint_overlap, vc.weak_min_footprint) : vc.min_footprint_overlap;
-  if (result->footprint.compared < kMinFootprintCells || result->footprint.share >= needed) return;
-  result->rejection = Rejection::kFootprint;
+  const SeenThrough& seen = result->footprint.seen;
+  if (result->footprint.compared >= kMinFootprintCells && result->footprint.share < needed) {
+    result->rejection = Rejection::kFootprint;
+  } else if (seen.judged >= kMinSightReturns && seen.share() > vc.max_seen_through) {
+    // Structure where the other sensor's beams went on: one of the two scans would have seen it (BENCHMARKS.md,
+    // "Seen through").
+    result->rejection = Rejection::kSeenThrough;
+  } else {
+    return;
+  }
   result->score = 0.0;
   result->T_match_query = Eigen::Matrix4d::Identity();
 }

@@ -123,6 +123,12 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
     std::cout << "footprint: " << fixed(m.footprint.share, 3) << " of " << m.footprint.compared
               << " structure cells agree under the pose (verification.min_footprint_overlap "
               << config.verification.min_footprint_overlap << ")\n";
+    if (m.footprint.seen.judged > 0) {
+      std::cout << "seen through: " << fixed(m.footprint.seen.share(), 3) << " of " << m.footprint.seen.judged
+                << " nearest returns, one sensor's beams went on past the other's under the pose "
+                   "(verification.max_seen_through "
+                << config.verification.max_seen_through << ")\n";
+    }
   }
   if (m.rejection == Rejection::kNone) {
     std::cout << "T_match_query (maps query points into the match frame"
@@ -144,7 +150,11 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
 /// The footprint check (algorithm §7.7), or null where it did not run (node files, the check off, no pose).
 Json footprintJson(const FootprintOverlap& f, const VerificationConfig& config) {
   if (f.compared == 0) return nullptr;
-  return {{"share", f.share}, {"compared_cells", f.compared}, {"min_share", config.min_footprint_overlap}};
+  return {{"share", f.share},
+          {"compared_cells", f.compared},
+          {"min_share", config.min_footprint_overlap},
+          {"seen_through", f.seen.share()},
+          {"sight_judged", f.seen.judged}};
 }
 
 void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {

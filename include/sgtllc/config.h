@@ -309,6 +309,13 @@ struct VerificationConfig {
   /// checked (a map file keeps its frames' footprints). [deviation: few nodes can agree by chance between two
   /// places; the walls around them rarely do. BENCHMARKS.md "Footprint check"]
   double min_footprint_overlap = 0.5;
+  /// Seen-through check (sight.h, algorithm §7.7, "Seen through"; part of the footprint check, so only where it
+  /// runs): a verified candidate is rejected (Rejection::kSeenThrough) when, under its pose, either sensor's beams
+  /// went on well past more than this share of the other frame's nearest returns at the sensor's height (with at
+  /// least 40 returns judged); 1 = off, the default: at 0.4 it removed no false loop on the simulated drives and
+  /// cost the 32-beam drive h32 three true ones (BENCHMARKS.md "Seen through"). The share is measured and
+  /// reported either way (MatchResult::footprint.seen).
+  double max_seen_through = 1.0;
   double footprint_cell = 0.5;     ///< side of a footprint cell (m)
   double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m)
   /// RANSAC random seed; every candidate starts from it (algorithm §7.2 [CHOICE]).

@@ -10,6 +10,7 @@
 
 #include "sgtllc/config.h"
 #include "sgtllc/labels.h"
+#include "sgtllc/sight.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc {
@@ -17,7 +18,8 @@ namespace sgtllc {
 /// The cells of a square grid (side VerificationConfig::footprint_cell, centred on the sensor, reaching
 /// footprint_radius) that hold at least one point of a stable class other than terrain: walls, fences, vegetation,
 /// trunks, poles and signs seen from above. A few nodes can agree by chance where two places have similar
-/// objects; the structure around them rarely does. 3,200 bytes at the defaults (160 × 160 cells of 0.5 m).
+/// objects; the structure around them rarely does. 3,200 bytes at the defaults (160 × 160 cells of 0.5 m), and the
+/// sight's 720.
 struct Footprint {
   float cell = 0.0f;           ///< cell side (m)
   int half = 0;                ///< the grid has 2·half cells a side; cell (i, j) covers [(i − half)·cell, …)
@@ -25,12 +27,14 @@ struct Footprint {
   /// true: every cell next to an occupied one is set as well (dilateFootprint), the form a stored frame keeps so
   /// that each query cell costs one look-up instead of nine.
   bool dilated = false;
+  /// How far the sensor saw (sight.h): the footprint says where the structure is, the sight where it is not.
+  Sight sight;
 
   bool empty() const { return bits.empty(); }
   /// The 64-bit words of the bits of a grid of 2·@p half cells a side.
   static size_t words(int half);
   bool occupied(int i, int j) const;
-  size_t bytes() const { return bits.size() * sizeof(uint64_t); }
+  size_t bytes() const { return bits.size() * sizeof(uint64_t) + sight.bytes(); }
 };
 
 /// The footprint of a labelled scan (points in the sensor frame, ids read through @p labels); empty when
@@ -44,6 +48,7 @@ Footprint dilateFootprint(const Footprint& f);
 struct FootprintOverlap {
   int compared = 0;    ///< occupied query cells that land well inside the match's grid (within 0.8 of its radius)
   double share = 0.0;  ///< of those, the share that land on or next to an occupied match cell; 0 if none
+  SeenThrough seen;    ///< the two frames' sights under the pose (sight.h)
 };
 
 /// Moves the centre of every occupied cell of @p query by @p T_match_query (p_match = T · p_query, the query's

@@ -21,10 +21,12 @@ enum class Rejection {
   kRansacFailed,      ///< no hypothesis reached min_inliers and min_inlier_fraction (algorithm §7.2)
   /// the pose puts too few of the query's structure cells on the match's (footprint.h; algorithm §7.7)
   kFootprint,
+  /// under the pose, one sensor saw through too much of what the other saw (sight.h; algorithm §7.7)
+  kSeenThrough,
 };
 
-/// "none", "few_associations", "ransac_failed" or "footprint_mismatch", as printed by the CLI and written to
-/// reports.
+/// "none", "few_associations", "ransac_failed", "footprint_mismatch" or "seen_through", as printed by the CLI and
+/// written to reports.
 const char* rejectionName(Rejection r);
 
 /// Outcome of comparing a query frame with one candidate ("match") frame.

@@ -41,6 +41,11 @@ def test_compare_pair_equals_cli_json(cli, query, match):
         assert r.match.footprint.compared == expected["footprint"]["compared_cells"] > 20
         assert r.match.footprint.share == pytest.approx(expected["footprint"]["share"], abs=1e-12)
         assert r.match.footprint.share > 0.9
+        # The seen-through check with it: the same counts as the CLI, little of either scan seen through.
+        seen = r.match.footprint.seen
+        assert seen.judged == expected["footprint"]["sight_judged"] > 100
+        assert seen.share == pytest.approx(expected["footprint"]["seen_through"], abs=1e-12)
+        assert seen.share == seen.seen_through / seen.judged < 0.1
 
 
 def test_true_loop_pose_matches_ground_truth(pair):

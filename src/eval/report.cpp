@@ -188,13 +188,14 @@ void writeSequenceReport(const std::string& dir, const SequenceRun& run, const S
 
   std::ostringstream pairs;
   pairs << "query,candidate,distance_m,score,score_c,rejection,estimated_distance_m,retrieved,associations,inliers,"
-           "query_nodes,candidate_nodes,footprint_share,path\n";
+           "query_nodes,candidate_nodes,footprint_share,path,seen_through_share,sight_judged\n";
   for (const FrameRecord& f : run.frames) {
     for (const CandidateRecord& c : f.candidates) {
       pairs << io::csvField(f.name) << "," << name(c.frame) << "," << c.distance << "," << c.score << "," << c.score_c << ","
             << rejectionName(c.rejection) << "," << c.estimated_distance << "," << (c.retrieved ? 1 : 0) << ","
             << c.associations << "," << c.inliers << "," << f.num_nodes << "," << c.match_nodes << ","
-            << c.footprint_share << "," << (c.by_consistency ? "consistency" : "descriptors") << "\n";
+            << c.footprint_share << "," << (c.by_consistency ? "consistency" : "descriptors") << ","
+            << (c.seen.judged > 0 ? c.seen.share() : -1.0) << "," << c.seen.judged << "\n";
     }
   }
   out.text("candidates.csv", pairs.str());

@@ -47,6 +47,7 @@ SequenceRun runSequenceEvaluation(const pipeline::FrameSource& source, const Gro
       added.inliers = static_cast<int>(c.match.inliers.size());
       added.match_nodes = static_cast<int>(detector.database().nodes(c.frame).size());
       added.footprint_share = c.match.footprint.compared > 0 ? c.match.footprint.share : -1.0;
+      added.seen = c.match.footprint.seen;
       added.by_consistency = c.match.by_consistency;
     }
     rec.best = r.best;

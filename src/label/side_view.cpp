@@ -12,7 +12,7 @@
 #include <cmath>
 #include <limits>
 
-#include "diamond_angle.h"
+#include "sgtllc/diamond_angle.h"
 
 namespace sgtllc::label {
 namespace {

@@ -105,6 +105,11 @@ void checkFrames(const Map& map, const std::string& source) {
       invalid("the footprint of frame '" + map.names[f] + "' is not a footprint grid (dilated, or its cell, size "
               "or bits do not agree)");
     }
+    const size_t sectors = static_cast<size_t>(kSightSectors);
+    if (!fp.sight.empty() && (fp.sight.low.size() != sectors || fp.sight.high.size() != sectors)) {
+      invalid("the sight of frame '" + map.names[f] + "' has " + std::to_string(fp.sight.low.size()) + " and " +
+              std::to_string(fp.sight.high.size()) + " sectors, not " + std::to_string(kSightSectors));
+    }
   }
   std::unordered_set<std::string_view> seen;
   for (const std::string& name : map.names) {

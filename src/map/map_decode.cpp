@@ -126,7 +126,7 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   const size_t n = parts.names->size();
   auto& [dim, keys] = *parts.keys;
   if (parts.nodes->size() != n || keys.size() / dim != n || (parts.poses && parts.poses->size() != n) ||
-      (parts.footprints && parts.footprints->size() != n)) {
+      (parts.footprints && parts.footprints->size() != n) || (parts.sights && parts.sights->size() != n)) {
     fail(MapProblem::kCorrupted, "corrupted map: the sections disagree on the frame count");
   }
 
@@ -134,7 +134,11 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   map.config = std::move(*parts.config);
   map.names = std::move(*parts.names);
   if (parts.poses) map.poses = std::move(*parts.poses);
+  if (parts.sights && !parts.footprints) fail(MapProblem::kCorrupted, "corrupted map: sights (SGHT) without footprints");
   if (parts.footprints) map.footprints = std::move(*parts.footprints);
+  if (parts.sights) {
+    for (size_t f = 0; f < n; ++f) map.footprints[f].sight = std::move((*parts.sights)[f]);
+  }
   RetrievalConfig search;
   search.method = parts.ivf ? RetrievalMethod::kIvf : method;
   map.database = FrameDatabase(search);

@@ -2,6 +2,7 @@
 // reader copy host words, so a big-endian host is refused at compile time rather than writing other files.
 #include "sgtllc/map/map_format.h"
 
+#include <algorithm>
 #include <optional>
 
 #include "ivf_section.h"
@@ -72,9 +73,22 @@ std::string encodeMap(const Map& map, const std::string& source) {
       for (uint64_t word : f.bits) put<uint64_t>(footprints, word);
     }
   }
+  // The sights go in a section of their own: a reader that predates them skips it and checks footprints only.
+  std::string sights;
+  const bool any_sight = std::any_of(map.footprints.begin(), map.footprints.end(),
+                                     [](const Footprint& f) { return !f.sight.empty(); });
+  if (any_sight) {
+    put<uint64_t>(sights, n);
+    for (const Footprint& f : map.footprints) {
+      put<uint16_t>(sights, static_cast<uint16_t>(f.sight.low.size()));
+      for (const std::vector<uint8_t>* layer : {&f.sight.low, &f.sight.high}) {
+        sights.append(reinterpret_cast<const char*>(layer->data()), layer->size());
+      }
+    }
+  }
   std::string body;
   body.reserve(conf.size() + names.size() + poses.size() + nodes.size() + keys.size() + ivf.size() +
-               footprints.size() + 7 * 20);
+               footprints.size() + sights.size() + 8 * 20);
   putSection(body, "CONF", conf);
   putSection(body, "FRMS", names);
   if (map.hasPoses()) putSection(body, "POSE", poses);
@@ -82,10 +96,11 @@ std::string encodeMap(const Map& map, const std::string& source) {
   putSection(body, "KEYS", keys);
   if (state) putSection(body, "IVFS", ivf);
   if (!footprints.empty()) putSection(body, "FTPR", footprints);
+  if (!sights.empty()) putSection(body, "SGHT", sights);
 
   std::string out(kMagic);
   put<uint32_t>(out, kFormatVersion);
-  put<uint32_t>(out, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (footprints.empty() ? 0 : 1));
+  put<uint32_t>(out, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (footprints.empty() ? 0 : 1) + (sights.empty() ? 0 : 1));
   put<uint64_t>(out, kHeaderBytes + body.size());
   put<uint64_t>(out, fingerprint(map.config));
   put<uint32_t>(out, 0);  // flags: none so far

@@ -100,9 +100,27 @@ void readFootprints(Reader& r, Parts& parts) {
   parts.footprints = std::move(frames);
 }
 
+void readSights(Reader& r, Parts& parts) {
+  // Each frame takes at least its sector count (2 bytes); its sectors are counted against the bytes left.
+  const size_t n = r.count(sizeof(uint16_t));
+  std::vector<Sight> frames;  // grown as frames parse, as the footprints
+  for (size_t f = 0; f < n; ++f) {
+    Sight sight;
+    const uint16_t sectors = r.get<uint16_t>();
+    if (sectors != 0 && sectors != kSightSectors) r.fail("a sight of " + std::to_string(sectors) + " sectors");
+    if (sectors > r.remaining() / 2) r.fail("a sight does not fit in the section");
+    for (std::vector<uint8_t>* layer : {&sight.low, &sight.high}) {
+      layer->resize(sectors);
+      for (uint8_t& v : *layer) v = r.get<uint8_t>();
+    }
+    frames.push_back(std::move(sight));
+  }
+  parts.sights = std::move(frames);
+}
+
 constexpr SectionKind kSections[] = {
     {"CONF", readConfig}, {"FRMS", readNames}, {"POSE", readPoses}, {"NODE", readNodes}, {"KEYS", readKeys},
-    {"IVFS", readIvf}, {"FTPR", readFootprints}};
+    {"IVFS", readIvf}, {"FTPR", readFootprints}, {"SGHT", readSights}};
 
 }  // namespace
 

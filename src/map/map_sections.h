@@ -25,6 +25,7 @@ struct Parts {
   std::optional<std::pair<uint32_t, std::vector<float>>> keys;  // dimension, row-major keys
   std::optional<IvfState> ivf;                                   // a trained inverted file (retrieval.method ivf)
   std::optional<std::vector<Footprint>> footprints;              // one per frame (empty ones where none)
+  std::optional<std::vector<Sight>> sights;                      // one per frame (empty ones where none)
 };
 
 struct SectionKind {

@@ -47,6 +47,7 @@ struct CandidateRecord {
   int inliers = 0;        ///< verified node pairs (RANSAC's or guided matching's; algorithm §7.2)
   int match_nodes = 0;    ///< the candidate's node count (the overlap score divides by the larger graph)
   double footprint_share = -1.0;  ///< MatchResult::footprint share; −1 where the check did not run
+  SeenThrough seen{};  ///< MatchResult::footprint's seen-through check (judged 0 where it did not run)
   bool by_consistency = false;    ///< MatchResult::by_consistency: verified by the consistency path (algorithm §7.8)
 };
 

@@ -20,7 +20,7 @@ inline constexpr uint32_t kFormatVersion = 4;
 
 /// One section of a map file as found by decodeMap.
 struct SectionInfo {
-  std::string tag;       ///< four letters: CONF, FRMS, POSE, NODE, KEYS, IVFS, FTPR (or one this version does not know)
+  std::string tag;       ///< four letters: CONF, FRMS, POSE, NODE, KEYS, IVFS, FTPR, SGHT (or one this version does not know)
   uint32_t version = 0;  ///< the section's own version
   uint64_t bytes = 0;    ///< the whole section: its 16-byte head, payload and 4-byte checksum
   bool known = true;     ///< false: skipped (a section added by a later writer that readers may ignore)
