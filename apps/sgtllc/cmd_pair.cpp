@@ -125,8 +125,7 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
               << config.verification.min_footprint_overlap << ")\n";
     if (m.footprint.seen.judged > 0) {
       std::cout << "seen through: " << fixed(m.footprint.seen.share(), 3) << " of " << m.footprint.seen.judged
-                << " nearest returns, one sensor's beams went on past the other's under the pose "
-                   "(verification.max_seen_through "
+                << " structure returns by the other scan's beams under the pose (verification.max_seen_through "
                 << config.verification.max_seen_through << ")\n";
     }
   }
