@@ -38,7 +38,8 @@ Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, co
     const size_t k = static_cast<size_t>(i) * static_cast<size_t>(side) + static_cast<size_t>(j);
     f.bits[k >> 6] |= uint64_t{1} << (k & 63u);
   }
-  f.sight = computeSight(cloud.points);
+  // Off, the check costs nothing: a second pass over the points is about a tenth of a frame's time online.
+  if (config.max_seen_through < 1.0) f.sight = computeSight(cloud.points);
   return f;
 }
 

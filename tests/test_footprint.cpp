@@ -40,7 +40,10 @@ TEST(Footprint, StructureCellsAreSetAndGroundTerrainAndFarPointsAreNot) {
   const Footprint f = computeFootprint(cloud, labels, defaults());
   ASSERT_FALSE(f.empty());
   EXPECT_EQ(f.half, 80);                          // 40 m in cells of 0.5 m
-  EXPECT_EQ(f.bytes(), (160u * 160u / 64u) * 8u + 720u);  // 3,200 bytes, and the sight's 720
+  EXPECT_EQ(f.bytes(), (160u * 160u / 64u) * 8u);  // 3,200 bytes; no sight with the seen-through check off
+  VerificationConfig seen = defaults();
+  seen.max_seen_through = 0.5;
+  EXPECT_EQ(computeFootprint(cloud, labels, seen).bytes(), (160u * 160u / 64u) * 8u + 720u);  // and its 720
   int set = 0;
   for (int i = 0; i < 160; ++i) {
     for (int j = 0; j < 160; ++j) set += f.occupied(i, j);

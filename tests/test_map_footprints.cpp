@@ -60,6 +60,7 @@ class MapFootprints : public ::testing::Test {
  protected:
   void SetUp() override {
     config_.retrieval.exclude_recent = 1;
+    config_.verification.max_seen_through = 0.5;  // the frames keep sights only with the seen-through check on
     detector_ = std::make_unique<LoopDetector>(config_);
     for (const char* frame : {"000052", "000088", "000850"}) detector_->process(test::kittiScan(frame));
     nodes_only_ = NodeExtractor(config_.cluster, config_.labels).extract(test::kittiScan("000088")).nodes;

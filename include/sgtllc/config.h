@@ -313,8 +313,8 @@ struct VerificationConfig {
   /// runs): a verified candidate is rejected (Rejection::kSeenThrough) when, under its pose, either sensor's beams
   /// went on well past more than this share of the other frame's nearest returns at the sensor's height (with at
   /// least 40 returns judged); 1 = off, the default: at 0.4 it removed no false loop on the simulated drives and
-  /// cost the 32-beam drive h32 three true ones (BENCHMARKS.md "Seen through"). The share is measured and
-  /// reported either way (MatchResult::footprint.seen).
+  /// cost the 32-beam drive h32 three true ones (BENCHMARKS.md "Seen through"). Below 1 the scans keep their
+  /// sights and the share is reported (MatchResult::footprint.seen); 0.99 measures it and rejects nearly nothing.
   double max_seen_through = 1.0;
   double footprint_cell = 0.5;     ///< side of a footprint cell (m)
   double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m)

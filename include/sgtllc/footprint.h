@@ -18,8 +18,8 @@ namespace sgtllc {
 /// The cells of a square grid (side VerificationConfig::footprint_cell, centred on the sensor, reaching
 /// footprint_radius) that hold at least one point of a stable class other than terrain: walls, fences, vegetation,
 /// trunks, poles and signs seen from above. A few nodes can agree by chance where two places have similar
-/// objects; the structure around them rarely does. 3,200 bytes at the defaults (160 × 160 cells of 0.5 m), and the
-/// sight's 720.
+/// objects; the structure around them rarely does. 3,200 bytes at the defaults (160 × 160 cells of 0.5 m), and
+/// the sight's 720 with the seen-through check on.
 struct Footprint {
   float cell = 0.0f;           ///< cell side (m)
   int half = 0;                ///< the grid has 2·half cells a side; cell (i, j) covers [(i − half)·cell, …)
@@ -28,6 +28,7 @@ struct Footprint {
   /// that each query cell costs one look-up instead of nine.
   bool dilated = false;
   /// How far the sensor saw (sight.h): the footprint says where the structure is, the sight where it is not.
+  /// Empty unless verification.max_seen_through < 1.
   Sight sight;
 
   bool empty() const { return bits.empty(); }

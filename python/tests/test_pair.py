@@ -41,11 +41,23 @@ def test_compare_pair_equals_cli_json(cli, query, match):
         assert r.match.footprint.compared == expected["footprint"]["compared_cells"] > 20
         assert r.match.footprint.share == pytest.approx(expected["footprint"]["share"], abs=1e-12)
         assert r.match.footprint.share > 0.9
-        # The seen-through check with it: the same counts as the CLI, little of either scan seen through.
-        seen = r.match.footprint.seen
-        assert seen.judged == expected["footprint"]["sight_judged"] > 100
-        assert seen.share == pytest.approx(expected["footprint"]["seen_through"], abs=1e-12)
-        assert seen.share == seen.seen_through / seen.judged < 0.1
+        # The seen-through check is off by default: no sight, nothing judged.
+        assert r.match.footprint.seen.judged == expected["footprint"]["sight_judged"] == 0
+
+
+def test_seen_through_equals_cli_json(cli, tmp_path):
+    # With the check on, the revisit 4501 -> 52: the same counts as the CLI, little of either scan seen through.
+    yaml = tmp_path / "seen.yaml"
+    yaml.write_text("verification:\n  max_seen_through: 0.5\n")
+    expected = cli_json(cli, "pair", QUERY_BIN, MATCH_BIN, "--config", yaml)
+    config = sgtllc.Config()
+    config.verification.max_seen_through = 0.5
+    r = sgtllc.compare_pair(*scan(QUERY_BIN), *scan(MATCH_BIN), config=config)
+    assert r.is_loop and expected["loop"]
+    seen = r.match.footprint.seen
+    assert seen.judged == expected["footprint"]["sight_judged"] > 100
+    assert seen.share == pytest.approx(expected["footprint"]["seen_through"], abs=1e-12)
+    assert seen.share == seen.seen_through / seen.judged < 0.1
 
 
 def test_true_loop_pose_matches_ground_truth(pair):
