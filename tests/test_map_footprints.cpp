@@ -205,6 +205,10 @@ TEST_F(MapFootprints, MalformedFootprintsAreNotWrittenNorRead) {
   Map short_sight = saved();
   short_sight.footprints[0].sight.high.resize(100);
   EXPECT_THROW(map::encodeMap(short_sight, "out.sgtmap"), MapError);
+  // Nor a half sight on a frame without a footprint grid (a node file's frame).
+  Map half_sight = saved();
+  half_sight.footprints[3].sight.high.assign(kSightSectors, 4);
+  EXPECT_THROW(map::encodeMap(half_sight, "out.sgtmap"), MapError);
 }
 
 }  // namespace

@@ -100,15 +100,16 @@ void checkFrames(const Map& map, const std::string& source) {
   }
   for (size_t f = 0; f < map.footprints.size(); ++f) {
     const Footprint& fp = map.footprints[f];
+    // Checked before the grid, which may be empty: the writer writes a sight of any frame that has one.
+    const size_t sectors = static_cast<size_t>(kSightSectors), low = fp.sight.low.size(), high = fp.sight.high.size();
+    if (!(low == high && (low == 0 || low == sectors))) {
+      invalid("the sight of frame '" + map.names[f] + "' has " + std::to_string(low) + " and " + std::to_string(high) +
+              " sectors, not none or " + std::to_string(kSightSectors) + " in both layers");
+    }
     if (fp.empty()) continue;
     if (fp.dilated || !isMapFootprintGrid(fp.cell, fp.half) || fp.bits.size() != Footprint::words(fp.half)) {
       invalid("the footprint of frame '" + map.names[f] + "' is not a footprint grid (dilated, or its cell, size "
               "or bits do not agree)");
-    }
-    const size_t sectors = static_cast<size_t>(kSightSectors);
-    if (!fp.sight.empty() && (fp.sight.low.size() != sectors || fp.sight.high.size() != sectors)) {
-      invalid("the sight of frame '" + map.names[f] + "' has " + std::to_string(fp.sight.low.size()) + " and " +
-              std::to_string(fp.sight.high.size()) + " sectors, not " + std::to_string(kSightSectors));
     }
   }
   std::unordered_set<std::string_view> seen;
