@@ -40,7 +40,7 @@ void bindResults(py::module_& m) {
              "under the pose, one sensor saw through too much of what the other saw (seen-through check)");
   py::class_<SeenThrough>(m, "SeenThrough", "The seen-through check of a verified pose (sight.h).")
       .def_readonly("judged", &SeenThrough::judged,
-                    "nearest returns of both frames within the other's sight (0: the check did not run)")
+                    "structure returns of both frames within the other's view (0: the check did not run)")
       .def_readonly("seen_through", &SeenThrough::seen_through, "of those, the ones the other sensor saw through")
       .def_property_readonly("share", &SeenThrough::share, "seen_through / judged (0 if none judged)");
 

@@ -78,7 +78,7 @@ void addGuidedInliers(const DescribedFrame& query, const DescribedFrame& match, 
 /// Fewest query cells the footprint check compares before it judges: a scan of open fields or one whose pose
 /// leaves it mostly outside the match's reach says too little either way.
 constexpr int kMinFootprintCells = 20;
-/// Fewest nearest returns (of both frames) the seen-through check judges before it judges the pose: a scan of
+/// Fewest structure returns (of both frames) the seen-through check judges before it judges the pose: a scan of
 /// open fields, or two whose sights barely overlap under the pose.
 constexpr int kMinSightReturns = 40;
 
