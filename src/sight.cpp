@@ -18,8 +18,10 @@ constexpr double kCompareRange = 40.0;
 /// threshold and more), the sight's rounding, and the rotation's error growing with the range.
 double sightMargin(double range) { return 1.0 + 0.03 * range; }
 
-int sectorOf(double x, double y) {
-  return std::min(kSightSectors - 1, static_cast<int>(diamondAngle(x, y) * (0.25 * kSightSectors)));
+/// The sector of direction (@p x, @p y), in the arithmetic of T: float for a scan's points, double for a pose's.
+template <typename T>
+int sectorOf(T x, T y) {
+  return std::min(kSightSectors - 1, static_cast<int>(diamondAngle(x, y) * (T(0.25) * kSightSectors)));
 }
 
 /// The unit direction in the middle of sector @p s (the diamond angle, inverted).
@@ -91,7 +93,7 @@ Sight computeSight(const std::vector<Eigen::Vector3f>& points) {
     if (!(p.z() >= -kSightBelow && p.z() <= kSightAbove)) continue;  // also drops NaN
     const float r2 = p.x() * p.x() + p.y() * p.y();
     if (!(r2 >= min2 && r2 <= std::numeric_limits<float>::max())) continue;  // no sector for an infinite one
-    const int s = std::min(kSightSectors - 1, static_cast<int>(diamondAngle(p.x(), p.y()) * (0.25f * kSightSectors)));
+    const int s = sectorOf(p.x(), p.y());
     float& slot = nearest[static_cast<size_t>((p.z() >= 0.0f ? kSightSectors : 0) + s)];
     slot = std::min(slot, r2);
   }
