@@ -50,19 +50,17 @@ double percentile(std::vector<double> v, double p) {
   return v[std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size())))];
 }
 
-/// Each probe count's query time and share of the exact top-15 (@p truth) over @p queries.
-void sweep(const FrameDatabase& db, const IvfState& state, const std::vector<std::vector<float>>& queries,
+/// Each probe count's query time and share of the exact top-15 (@p truth) over @p queries, searched in @p db
+/// itself (no copy of its keys: the peak memory stays the database's).
+void sweep(FrameDatabase& db, const IvfState& state, const std::vector<std::vector<float>>& queries,
            const std::vector<std::vector<RetrievedFrame>>& truth, const std::vector<int>& probes) {
-  RetrievalConfig retrieval;
-  retrieval.method = RetrievalMethod::kIvf;
   for (int probe : probes) {
-    RetrievalConfig r = retrieval;
+    RetrievalConfig r;
+    r.method = RetrievalMethod::kIvf;
+    r.ivf_train_frames = state.trained_frames;
     r.ivf_probe = probe;
-    FrameDatabase probed(r, 1);
-    for (int f = 0; f < db.size(); ++f) {
-      probed.add(StoredFrame{{}, std::vector<float>(db.global(f), db.global(f) + db.globalDimension())});
-    }
-    probed.restoreIvf(state);
+    db.setSearch(r, 1);
+    db.restoreIvf(state);
     std::vector<double> ms;
     std::vector<double> cpu_ms;
     long found = 0;
@@ -70,7 +68,7 @@ void sweep(const FrameDatabase& db, const IvfState& state, const std::vector<std
     for (size_t q = 0; q < queries.size(); ++q) {
       const auto t = Clock::now();
       const double cpu = threadCpuMs();
-      const auto hits = probed.query(queries[q], probed.size() - 1, 15);
+      const auto hits = db.query(queries[q], db.size() - 1, 15);
       cpu_ms.push_back(threadCpuMs() - cpu);
       ms.push_back(since(t) * 1e3);
       for (const auto& h : hits) {
@@ -84,20 +82,17 @@ void sweep(const FrameDatabase& db, const IvfState& state, const std::vector<std
   }
 }
 
-/// Copies of @p db's keys searched exactly, and the exact top-15 of each query, timed.
-std::vector<std::vector<RetrievedFrame>> exactTop15(const FrameDatabase& db,
-                                                    const std::vector<std::vector<float>>& queries) {
-  FrameDatabase exact{RetrievalConfig{}};
-  for (int f = 0; f < db.size(); ++f) {
-    exact.add(StoredFrame{{}, std::vector<float>(db.global(f), db.global(f) + db.globalDimension())});
-  }
+/// The exact top-15 of each query, searched by the exact scan of @p db's own keys, timed. Leaves @p db searching
+/// exactly; sweep() puts the inverted file back.
+std::vector<std::vector<RetrievedFrame>> exactTop15(FrameDatabase& db, const std::vector<std::vector<float>>& queries) {
+  db.setSearch(RetrievalConfig{}, 1);
   std::vector<std::vector<RetrievedFrame>> truth;
   std::vector<double> exact_ms;
   std::vector<double> exact_cpu;
   for (const auto& q : queries) {
     const auto t = Clock::now();
     const double cpu = threadCpuMs();
-    truth.push_back(exact.query(q, exact.size() - 1, 15));
+    truth.push_back(db.query(q, db.size() - 1, 15));
     exact_cpu.push_back(threadCpuMs() - cpu);
     exact_ms.push_back(since(t) * 1e3);
   }
@@ -132,7 +127,7 @@ int loadMap(const std::string& path, const std::vector<int>& probes) {
   Config config;
   config.retrieval = ivfRetrieval(1000000);
   const auto t = Clock::now();
-  const map::Map m = map::readMapFile(path, config);
+  map::Map m = map::readMapFile(path, config);
   std::printf("map %s: %d frames loaded in %.2f s; peak memory %.0f MB\n", path.c_str(), m.size(), since(t), peakMb());
   const std::optional<IvfState> state = m.database.ivfState();
   if (!state) {
@@ -200,11 +195,14 @@ int main(int argc, char** argv) {
   t = Clock::now();
   db.query(queries[0], db.size() - 1, 15);  // trains and files every frame
   const IvfState state = *db.ivfState();
-  std::printf("inverted file: %d lists, trained and filled in %.1f s (2 threads); %.1f MB; peak memory %.0f MB\n",
-              state.lists, since(t), (state.centroids.size() * 4.0 + state.list_of_frame.size() * 4.0) / 1e6, peakMb());
+  std::printf("inverted file: %d lists, trained and filled in %.1f s (2 threads); %.1f MB saved, %.1f MB of codes; "
+              "peak memory %.0f MB\n", state.lists, since(t),
+              (state.centroids.size() * 4.0 + state.list_of_frame.size() * 4.0) / 1e6,
+              static_cast<double>(db.size()) * db.globalDimension() / 1e6, peakMb());
 
   const std::vector<std::vector<RetrievedFrame>> truth = exactTop15(db, queries);
   sweep(db, state, queries, truth, probes);
+  std::printf("peak memory %.0f MB\n", peakMb());
   if (!save.empty()) saveMap(db, save);
   return 0;
 }

@@ -91,6 +91,43 @@ PointKdTree::PointKdTree(const std::vector<float>* xyz) : tree_(std::make_unique
 
 PointKdTree::~PointKdTree() = default;
 
+namespace {
+
+/// One nearest point, admitted only below a bound from the start: nanoflann prunes every branch farther than
+/// worstDist(), so the search never leaves the bound's ball. Points are admitted, and ties decided, as by a
+/// KNNResultSet of one (strictly closer than the best so far, visiting order), so the point found is nearest()'s.
+class BoundedNearest {
+ public:
+  explicit BoundedNearest(float bound) : dist_(bound) {}
+  bool full() const { return true; }
+  bool addPoint(float dist, uint32_t index) {
+    if (dist < dist_) {
+      dist_ = dist;
+      index_ = static_cast<int>(index);
+    }
+    return true;
+  }
+  float worstDist() const { return dist_; }
+  int index() const { return index_; }
+
+ private:
+  float dist_;
+  int index_ = -1;
+};
+
+}  // namespace
+
+std::pair<int, float> PointKdTree::nearestWithin(const float* query, double max_d2) const {
+  if (tree_->adaptor.count == 0 || !(max_d2 >= 0.0)) return {-1, std::numeric_limits<float>::infinity()};
+  // The smallest float above every float d with double(d) <= max_d2: "d < bound" is then "double(d) <= max_d2".
+  float largest = static_cast<float>(max_d2);
+  if (static_cast<double>(largest) > max_d2) largest = std::nextafter(largest, 0.0f);
+  BoundedNearest result(std::nextafter(largest, std::numeric_limits<float>::infinity()));
+  tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
+  if (result.index() < 0) return {-1, std::numeric_limits<float>::infinity()};
+  return {result.index(), result.worstDist()};
+}
+
 std::pair<int, float> PointKdTree::nearest(const float* query) const {
   if (tree_->adaptor.count == 0) return {-1, std::numeric_limits<float>::infinity()};
   uint32_t idx = 0;

@@ -126,6 +126,29 @@ TEST_F(OutputFile, ErrorsLeaveNothingBehind) {
   EXPECT_EQ(readAll(path("taken.txt")), "theirs");
 }
 
+TEST_F(OutputFile, PiecesAreWrittenInOrderAsOneFile) {
+  // Small pieces gathered into megabyte writes, a piece larger than that written on its own, empty pieces, and a
+  // gathered run that would overflow a megabyte flushed first.
+  const std::string big(3u << 20, 'b'), near(1000000, 'n');
+  std::vector<std::string> small;
+  for (int i = 0; i < 5000; ++i) small.push_back(std::to_string(i) + ",");
+  std::vector<std::string_view> pieces = {"head;", ""};
+  for (const std::string& piece : small) pieces.push_back(piece);
+  pieces.push_back(big);
+  pieces.push_back(near);
+  pieces.push_back(near);
+  pieces.push_back("tail");
+  std::string joined;
+  for (std::string_view piece : pieces) joined += piece;
+  io::writeFileAtomically(path("pieces.bin"), pieces, io::Overwrite::kRefuse);
+  EXPECT_EQ(readAll(path("pieces.bin")), joined);
+  EXPECT_EQ(entries(), std::vector<std::string>{"pieces.bin"});
+  io::writeFileAtomically(path("none.bin"), std::vector<std::string_view>{}, io::Overwrite::kRefuse);
+  EXPECT_EQ(fs::file_size(path("none.bin")), 0u);
+  EXPECT_THAT([&] { io::writeFileAtomically(path("pieces.bin"), pieces, io::Overwrite::kRefuse); },
+              testing::ThrowsMessage<Error>(HasSubstr("file exists")));
+}
+
 TEST_F(OutputFile, ALongNameStillGetsATemporaryFile) {
   const std::string name(250, 'n');
   io::writeFileAtomically(path(name), "long\n", io::Overwrite::kRefuse);

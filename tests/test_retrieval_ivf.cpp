@@ -1,7 +1,11 @@
 // retrieval.method: ivf (algorithm §5 "Retrieval at scale"): the inverted file against the exact scan on 10,000
 // frames cropped from the bundled real scans' nodes — the exact scan until it trains, then at least 0.99 of the exact
 // top-15 with the exact distances; the same at 1 and 2 threads; a saved state restores the same answers.
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <set>
 
@@ -9,6 +13,7 @@
 
 #include "retrieval/ivf_index.h"
 #include "sgtllc/database.h"
+#include "sgtllc/map/map_file.h"
 #include "sgtllc/map/map_format.h"
 #include "sgtllc/node_extraction.h"
 #include "test_places_support.h"
@@ -161,7 +166,15 @@ TEST_F(IvfSearch, AMapFileCarriesTheTrainedIndex) {
   const FrameDatabase db = fill(config.retrieval, 1, 4000);
   std::vector<std::string> names;
   for (int f = 0; f < db.size(); ++f) names.push_back(std::to_string(f));
-  const std::string bytes = map::encodeMap(map::makeMap(db, config, names));
+  const map::Map made = map::makeMap(db, config, names);
+  const std::string bytes = map::encodeMap(made);
+  // The file is written from the map's pieces (its keys straight from the database): the same bytes.
+  const std::string file = (std::filesystem::path(::testing::TempDir()) /
+                            ("sgtllc_ivf_" + std::to_string(::getpid()) + ".sgtmap")).string();
+  map::writeMapFile(file, made, io::Overwrite::kReplace);
+  std::ifstream in(file, std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), bytes);
+  std::filesystem::remove(file);
   const map::Map loaded = map::decodeMap(bytes, "ivf.sgtmap", RetrievalMethod::kIvf);
   ASSERT_TRUE(loaded.database.ivfState().has_value());
   EXPECT_EQ(loaded.database.ivfState()->centroids, db.ivfState()->centroids);

@@ -158,8 +158,9 @@ enum class RetrievalMethod {
   kBruteForce,  ///< exact linear scan (algorithm §5 [CHOICE]) [default]
   kKdTree,      ///< exact kd-tree search (nanoflann); frames at equal distance up to float rounding may swap
   /// Inverted file for large maps (algorithm §5 "Retrieval at scale"): FAISS k-means centroids over the stored keys,
-  /// each frame in its nearest centroid's list, and an exact scan of the frames in the retrieval.ivf_probe nearest
-  /// lists. Approximate (a true neighbour in an unscanned list is missed); the exact scan until
+  /// each frame in its nearest centroid's list; a query scans one-byte codes of the keys in the retrieval.ivf_probe
+  /// nearest lists and ranks the nearest 4·K of them by the exact distance. Approximate (a true neighbour in an
+  /// unscanned list is missed); the exact scan until
   /// retrieval.ivf_train_frames frames are stored. Needs sgtllc built with FAISS (libfaiss-dev).
   kIvf,
 };
@@ -191,8 +192,8 @@ struct RetrievalConfig {
   RetrievalMethod method = RetrievalMethod::kBruteForce;  ///< search structure
   /// Lists of the inverted file (method ivf); 0: 2·√N at training, within [16, 16384].
   int ivf_lists = 0;
-  /// Lists a query scans (method ivf). 20 of the 2,000 lists of a million-frame map found 0.991 of the exact
-  /// top-15 in 3.6 ms of CPU on the harder of the two query sets of BENCHMARKS.md "Retrieval at scale".
+  /// Lists a query scans (method ivf). 20 of the 2,000 lists of a million-frame map found 0.995 of the exact
+  /// top-15 in 1.5 ms of CPU on the harder of the two query sets of BENCHMARKS.md "One-byte codes in the lists".
   int ivf_probe = 20;
   /// Frames stored before the inverted file is trained (method ivf); fewer are searched exactly. With
   /// ivf_lists 0 it is trained again each time the database has grown fourfold.

@@ -21,6 +21,10 @@ class PointKdTree {
   PointKdTree& operator=(const PointKdTree&) = delete;
   /// The nearest point and its squared distance, or (−1, +inf) for an empty tree.
   std::pair<int, float> nearest(const float* query) const;
+  /// The nearest point if its squared distance is at most @p max_d2 (as a double, the comparison registration
+  /// makes), else (−1, +inf). The same point as nearest() whenever that one is this close, found without searching
+  /// the tree beyond the bound: the far query points, which pair with nothing, cost the most otherwise.
+  std::pair<int, float> nearestWithin(const float* query, double max_d2) const;
   /// Indices of the (at most) @p k nearest points, nearest first.
   void knn(const float* query, int k, std::vector<uint32_t>* out) const;
 

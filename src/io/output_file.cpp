@@ -43,6 +43,25 @@ void writeFileAtomically(const std::string& path, std::string_view content, Over
   tmp.publish(overwrite);
 }
 
+void writeFileAtomically(const std::string& path, const std::vector<std::string_view>& pieces, Overwrite overwrite) {
+  constexpr size_t kGather = size_t{1} << 20;
+  detail::TemporaryFile tmp(path);
+  std::string gathered;
+  for (std::string_view piece : pieces) {
+    if (gathered.size() + piece.size() > kGather && !gathered.empty()) {
+      tmp.write(gathered);
+      gathered.clear();
+    }
+    if (piece.size() >= kGather) {
+      tmp.write(piece);
+    } else {
+      gathered += piece;
+    }
+  }
+  tmp.write(gathered);
+  tmp.publish(overwrite);
+}
+
 void writeThroughTemporary(const std::string& path, Overwrite overwrite,
                            const std::function<void(const std::string& tmp)>& write) {
   detail::TemporaryFile tmp(path);

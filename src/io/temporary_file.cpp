@@ -34,7 +34,7 @@ static_assert(std::atomic<int>::is_always_lock_free);
 constexpr int kSlots = 64;
 struct Slot {
   std::atomic<int> state{0};
-  char path[PATH_MAX];
+  char path[PATH_MAX] = {};  // initialised, so the table is constant-initialised (zero pages) and costs no start-up
 };
 Slot g_slots[kSlots];
 

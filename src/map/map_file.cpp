@@ -7,6 +7,7 @@
 #include <new>
 
 #include "map_decode.h"
+#include "map_encode.h"
 #include "sgtllc/io/input_file.h"
 
 namespace sgtllc::map {
@@ -50,7 +51,10 @@ Map readFile(const std::string& path, RetrievalMethod method, MapLayout* layout)
 
 void writeMapFile(const std::string& path, const Map& map, io::Overwrite overwrite) {
   io::checkOutputFile(path, overwrite);  // before encoding: a refused path costs nothing
-  io::writeFileAtomically(path, encodeMap(map, path), overwrite);
+  // Written from the pieces, the keys from the map's memory: no copy of a map of gigabytes (BENCHMARKS.md
+  // "Retrieval at scale").
+  const detail::EncodedMap bytes = detail::encodeMapPieces(map, path);
+  io::writeFileAtomically(path, bytes.pieces(), overwrite);
 }
 
 Map readMapFile(const std::string& path, const Config& config, MapLayout* layout) {

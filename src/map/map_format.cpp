@@ -7,6 +7,7 @@
 
 #include "ivf_section.h"
 #include "map_bytes.h"
+#include "map_encode.h"
 
 namespace sgtllc::map {
 
@@ -15,22 +16,34 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
 
 namespace {
 
-using namespace detail;  // put, putText, the header constants (map_bytes.h), encodeIvf (ivf_section.h)
+using namespace detail;  // put, putText, the header constants (map_bytes.h), encodeIvf (ivf_section.h), EncodedMap
 
 uint32_t crc(std::string_view bytes) { return crc32Of(bytes); }
 
-void putSection(std::string& out, std::string_view tag, const std::string& payload) {
-  const size_t start = out.size();
-  out.append(tag.data(), 4);
-  put<uint32_t>(out, kSectionVersion);
-  put<uint64_t>(out, payload.size());
-  out += payload;
-  put<uint32_t>(out, crc(std::string_view(out).substr(start)));
+/// A section: head (tag, version, payload bytes), @p payload, then @p tail (views of memory held elsewhere: the
+/// keys), then the crc32 of all of it.
+void putSection(EncodedMap& out, std::string_view tag, std::string payload,
+                const std::vector<std::string_view>& tail = {}) {
+  uint64_t bytes = payload.size();
+  for (std::string_view t : tail) bytes += t.size();
+  std::string head(tag.data(), 4);
+  put<uint32_t>(head, kSectionVersion);
+  put<uint64_t>(head, bytes);
+  uint32_t sum = crc32Of(payload, crc32Of(head));
+  for (std::string_view t : tail) sum = crc32Of(t, sum);
+  std::string end;
+  put<uint32_t>(end, sum);
+  out.own(std::move(head));
+  out.own(std::move(payload));
+  for (std::string_view t : tail) out.add(t);
+  out.own(std::move(end));
 }
 
 }  // namespace
 
-std::string encodeMap(const Map& map, const std::string& source) {
+namespace detail {
+
+EncodedMap encodeMapPieces(const Map& map, const std::string& source) {
   checkFrames(map, source);
   const FrameDatabase& db = map.database;
   const uint64_t n = static_cast<uint64_t>(db.size());
@@ -61,9 +74,10 @@ std::string encodeMap(const Map& map, const std::string& source) {
   const uint32_t dim = n ? static_cast<uint32_t>(db.globalDimension()) : 1;
   put<uint32_t>(keys, dim);
   put<uint64_t>(keys, n);
-  for (int f = 0; f < db.size(); ++f) keys.append(reinterpret_cast<const char*>(db.global(f)), sizeof(float) * dim);
+  std::vector<std::string_view> key_rows;  // the database's own memory, not copied
+  key_rows.reserve(n);
+  for (int f = 0; f < db.size(); ++f) key_rows.emplace_back(reinterpret_cast<const char*>(db.global(f)), sizeof(float) * dim);
   const std::optional<IvfState> state = db.ivfState();
-  const std::string ivf = state ? encodeIvf(*state, dim) : std::string();
   std::string footprints;
   if (!map.footprints.empty()) {
     put<uint64_t>(footprints, n);
@@ -86,27 +100,35 @@ std::string encodeMap(const Map& map, const std::string& source) {
       }
     }
   }
-  std::string body;
-  body.reserve(conf.size() + names.size() + poses.size() + nodes.size() + keys.size() + ivf.size() +
-               footprints.size() + sights.size() + 8 * 20);
-  putSection(body, "CONF", conf);
-  putSection(body, "FRMS", names);
-  if (map.hasPoses()) putSection(body, "POSE", poses);
-  putSection(body, "NODE", nodes);
-  putSection(body, "KEYS", keys);
-  if (state) putSection(body, "IVFS", ivf);
-  if (!footprints.empty()) putSection(body, "FTPR", footprints);
-  if (!sights.empty()) putSection(body, "SGHT", sights);
+  const bool has_footprints = !footprints.empty(), has_sights = !sights.empty();
+  EncodedMap out;
+  putSection(out, "CONF", std::move(conf));
+  putSection(out, "FRMS", std::move(names));
+  if (map.hasPoses()) putSection(out, "POSE", std::move(poses));
+  putSection(out, "NODE", std::move(nodes));
+  putSection(out, "KEYS", std::move(keys), key_rows);
+  if (state) putSection(out, "IVFS", encodeIvf(*state, dim));
+  if (has_footprints) putSection(out, "FTPR", std::move(footprints));
+  if (has_sights) putSection(out, "SGHT", std::move(sights));
 
-  std::string out(kMagic);
-  put<uint32_t>(out, kFormatVersion);
-  put<uint32_t>(out, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (footprints.empty() ? 0 : 1) + (sights.empty() ? 0 : 1));
-  put<uint64_t>(out, kHeaderBytes + body.size());
-  put<uint64_t>(out, fingerprint(map.config));
-  put<uint32_t>(out, 0);  // flags: none so far
-  put<uint32_t>(out, crc(out));
-  out.reserve(out.size() + body.size());
-  out += body;
+  std::string header(kMagic);
+  put<uint32_t>(header, kFormatVersion);
+  put<uint32_t>(header, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (has_footprints ? 1 : 0) + (has_sights ? 1 : 0));
+  put<uint64_t>(header, kHeaderBytes + out.size());
+  put<uint64_t>(header, fingerprint(map.config));
+  put<uint32_t>(header, 0);  // flags: none so far
+  put<uint32_t>(header, crc(header));
+  out.prepend(std::move(header));
+  return out;
+}
+
+}  // namespace detail
+
+std::string encodeMap(const Map& map, const std::string& source) {
+  const detail::EncodedMap pieces = detail::encodeMapPieces(map, source);
+  std::string out;
+  out.reserve(pieces.size());
+  for (std::string_view piece : pieces.pieces()) out += piece;
   return out;
 }
 

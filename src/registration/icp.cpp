@@ -92,8 +92,8 @@ Linearisation linearise(const std::vector<Eigen::Vector3f>& query, const std::ve
     const Eigen::Vector3d p = pf.cast<double>();
     const Eigen::Vector3d x = R * p + t;
     const Eigen::Vector3f xf = x.cast<float>();
-    const auto [j, d2] = tree.nearest(xf.data());
-    if (j < 0 || d2 > max_d2) continue;
+    const int j = tree.nearestWithin(xf.data(), max_d2).first;
+    if (j < 0) continue;
     const Eigen::Vector3d n = normal(static_cast<size_t>(j)).cast<double>();
     if (n.isZero()) continue;
     const Eigen::Vector3d q = Eigen::Vector3f(&rows[3 * static_cast<size_t>(j)]).cast<double>();
@@ -121,7 +121,7 @@ double fitnessAt(const std::vector<Eigen::Vector3f>& query, const PointKdTree& t
   int paired = 0;
   for (const Eigen::Vector3f& p : query) {
     const Eigen::Vector3f x = Tf.topLeftCorner<3, 3>() * p + Tf.topRightCorner<3, 1>();
-    paired += tree.nearest(x.data()).second <= max_distance * max_distance;
+    paired += tree.nearestWithin(x.data(), max_distance * max_distance).first >= 0;
   }
   return static_cast<double>(paired) / static_cast<double>(query.size());
 }

@@ -70,6 +70,7 @@ void IvfIndex::train() {
   state_.trained_frames = rows;
   state_.centroids.assign(clustering.centroids.begin(), clustering.centroids.end());
   state_.list_of_frame.clear();
+  coded_ = false;
 #else
   throw Error("retrieval.method ivf: this build of sgtllc has no FAISS (configure with libfaiss-dev installed)");
 #endif
@@ -80,26 +81,49 @@ void IvfIndex::update() {
   const bool first = !trained() && rows >= config_.ivf_train_frames;
   const bool regrow = trained() && config_.ivf_lists == 0 && rows >= 4 * static_cast<long long>(state_.trained_frames);
   if (first || regrow) train();
-  if (!trained() || rows == size()) return;
-  const int from = size();
-  state_.list_of_frame.resize(rows);
-  parallelFor(rows - from, threads_, [&](int i) {
-    const int f = from + i;
-    state_.list_of_frame[f] = nearestList(rows_->data() + static_cast<size_t>(f) * dim_);
-  });
-  if (from == 0) {
-    rebuildLists();
-  } else {
-    for (int f = from; f < rows; ++f) lists_[state_.list_of_frame[f]].push_back(f);
+  if (!trained()) return;
+  if (rows != size()) {
+    const int from = size();
+    state_.list_of_frame.resize(rows);
+    parallelFor(rows - from, threads_, [&](int i) {
+      const int f = from + i;
+      state_.list_of_frame[f] = nearestList(rows_->data() + static_cast<size_t>(f) * dim_);
+    });
+    if (from == 0) {
+      rebuildLists();
+    } else {
+      for (int f = from; f < rows; ++f) {
+        const int list = state_.list_of_frame[f];
+        lists_[list].push_back(f);
+        if (coded_) codes_.encode(rows_->data() + static_cast<size_t>(f) * dim_, &list_codes_[list]);
+      }
+    }
   }
+  if (!coded_) encodeLists();
 }
 
 void IvfIndex::rebuildLists() {
+  std::vector<size_t> count(state_.lists, 0);
+  for (int32_t l : state_.list_of_frame) ++count[l];
   lists_.assign(state_.lists, {});
+  for (int l = 0; l < state_.lists; ++l) lists_[l].reserve(count[l]);
   for (int f = 0; f < size(); ++f) lists_[state_.list_of_frame[f]].push_back(f);
+  coded_ = false;
+}
+
+void IvfIndex::encodeLists() {
+  codes_ = ScalarCodes(rows_->data(), state_.trained_frames, dim_);  // the rows the centroids were trained on
+  list_codes_.assign(state_.lists, {});
+  for (int l = 0; l < state_.lists; ++l) {
+    std::vector<uint8_t>& codes = list_codes_[l];
+    codes.reserve(lists_[l].size() * static_cast<size_t>(dim_));  // exact: a million default keys code to 840 MB
+    for (int32_t f : lists_[l]) codes_.encode(rows_->data() + static_cast<size_t>(f) * dim_, &codes);
+  }
+  coded_ = true;
 }
 
 void IvfIndex::knn(const float* query, int last, int k, int probe, std::vector<std::pair<int, float>>* out) const {
+  if (!coded_) throw std::logic_error("IvfIndex::knn: update() has not made the codes since the last restore()");
   std::vector<std::pair<int, float>> centres(state_.lists);
   for (int l = 0; l < state_.lists; ++l) {
     centres[l] = {l, squaredDistance(query, state_.centroids.data() + static_cast<size_t>(l) * dim_, dim_)};
@@ -107,17 +131,28 @@ void IvfIndex::knn(const float* query, int last, int k, int probe, std::vector<s
   const size_t scan = std::min(centres.size(), static_cast<size_t>(probe));
   std::partial_sort(centres.begin(), centres.begin() + scan, centres.end(), closer);
   std::vector<std::pair<int, float>> hits;
-  const size_t row_bytes = static_cast<size_t>(dim_) * sizeof(float);
+  std::vector<uint8_t> query_code;
+  codes_.encode(query, &query_code);
   for (size_t c = 0; c < scan; ++c) {
     const std::vector<int32_t>& list = lists_[centres[c].first];
-    for (size_t i = 0; i < list.size() && list[i] <= last; ++i) {  // lists are ascending
-      // A list's frames lie far apart in the key matrix: fetch the next one's key while this one is compared.
-      if (i + 1 < list.size()) {
-        const char* next = reinterpret_cast<const char*>(rows_->data() + static_cast<size_t>(list[i + 1]) * dim_);
-        for (size_t b = 0; b < row_bytes; b += 64) __builtin_prefetch(next + b);
-      }
-      hits.emplace_back(list[i], squaredDistance(rows_->data() + static_cast<size_t>(list[i]) * dim_, query, dim_));
+    const uint8_t* code = list_codes_[centres[c].first].data();
+    for (size_t i = 0; i < list.size() && list[i] <= last; ++i, code += dim_) {  // lists are ascending
+      hits.emplace_back(list[i], static_cast<float>(ScalarCodes::distance(query_code.data(), code, dim_)));
     }
+  }
+  // The nearest estimates, then their exact distances; the order (distance, row) is total, so the frames kept do
+  // not depend on the order the lists were scanned in.
+  const size_t compared = std::min(hits.size(), static_cast<size_t>(kRerank) * static_cast<size_t>(std::max(k, 0)));
+  std::nth_element(hits.begin(), hits.begin() + compared, hits.end(), closer);
+  hits.resize(compared);
+  const size_t row_bytes = static_cast<size_t>(dim_) * sizeof(float);
+  for (size_t i = 0; i < hits.size(); ++i) {
+    // The frames lie far apart in the key matrix: fetch the next one's key while this one is compared.
+    if (i + 1 < hits.size()) {
+      const char* next = reinterpret_cast<const char*>(rows_->data() + static_cast<size_t>(hits[i + 1].first) * dim_);
+      for (size_t b = 0; b < row_bytes; b += 64) __builtin_prefetch(next + b);
+    }
+    hits[i].second = squaredDistance(rows_->data() + static_cast<size_t>(hits[i].first) * dim_, query, dim_);
   }
   const size_t keep = std::min(hits.size(), static_cast<size_t>(k));
   std::partial_sort(hits.begin(), hits.begin() + keep, hits.end(), closer);
@@ -137,7 +172,7 @@ void IvfIndex::restore(IvfState state) {
     if (l < 0 || l >= state.lists) throw std::invalid_argument("inverted file: a frame's list is out of range");
   }
   state_ = std::move(state);
-  rebuildLists();
+  rebuildLists();  // the codes wait for the first query: a map being copied or written needs none
 }
 
 }  // namespace sgtllc::internal

@@ -8,15 +8,23 @@
 #include <utility>
 #include <vector>
 
+#include "retrieval/scalar_codes.h"
 #include "sgtllc/database.h"
 
 namespace sgtllc::internal {
 
 /// Indexes rows 0..size()-1 of a row-major key matrix owned elsewhere (it may grow and reallocate between calls).
-/// The centroids are the only approximate part: list assignment and the scan use the database's own squared
-/// distance, so a frame inside a scanned list is ranked exactly as the linear scan ranks it.
+/// Each list keeps its frames' keys as one-byte codes side by side (ScalarCodes), so a query reads a few
+/// megabytes in order instead of gathering float keys from all over the matrix; the codes only choose which
+/// frames to compare exactly: a frame found is ranked by the database's own squared distance, as the linear scan
+/// ranks it.
 class IvfIndex {
  public:
+  /// Frames compared exactly per frame asked for (k): the codes' estimate is within a few steps of the exact
+  /// distance, and the exact top-k of the scanned lists lies within their 4·k nearest estimates in all but a few
+  /// queries (BENCHMARKS.md "Retrieval at scale").
+  static constexpr int kRerank = 4;
+
   /// @p rows is read through this pointer at every call; it must outlive the index.
   IvfIndex(const std::vector<float>* rows, int dim, const RetrievalConfig& config, int threads);
 
@@ -29,7 +37,9 @@ class IvfIndex {
   int size() const { return static_cast<int>(state_.list_of_frame.size()); }
 
   /// The k rows among 0..last nearest to @p query (squared L2) among those in the @p probe lists whose centroids
-  /// are nearest, nearest first, ties to the lower row. Requires trained(). Appends (row, distance²) pairs.
+  /// are nearest, nearest first, ties to the lower row: the kRerank·k nearest by their codes, ranked by the exact
+  /// distance. Requires trained() and update() since the last restore() (update() makes the codes). Appends
+  /// (row, distance²) pairs.
   void knn(const float* query, int last, int k, int probe, std::vector<std::pair<int, float>>* out) const;
 
   /// The index's state (for a map file) and its restoration; restore() throws std::invalid_argument if @p state
@@ -47,7 +57,12 @@ class IvfIndex {
   RetrievalConfig config_;
   int threads_;
   IvfState state_;
+  void encodeLists();
+
   std::vector<std::vector<int32_t>> lists_;  ///< frames of each list, ascending
+  ScalarCodes codes_;                        ///< trained with the centroids, on the same rows
+  std::vector<std::vector<uint8_t>> list_codes_;  ///< each list's frames' codes, in the list's order
+  bool coded_ = false;  ///< list_codes_ matches lists_ (made by update(), not by restore())
 };
 
 /// Whether this build of sgtllc can train an inverted file (it was built with FAISS).

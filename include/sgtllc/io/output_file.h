@@ -49,6 +49,9 @@ void checkOutputFiles(const std::vector<std::string>& paths, Overwrite overwrite
 /// Writes @p content to a temporary file beside @p path and renames it to @p path as @p overwrite says. Throws
 /// sgtllc::Error naming @p path; the temporary file never stays behind.
 void writeFileAtomically(const std::string& path, std::string_view content, Overwrite overwrite);
+/// The same for content given as @p pieces in order (a big file written from where its parts lie, not joined in
+/// memory first); small pieces are gathered into writes of about a megabyte.
+void writeFileAtomically(const std::string& path, const std::vector<std::string_view>& pieces, Overwrite overwrite);
 
 /// For files another library writes by name (PNG plots): creates the temporary file exclusively as
 /// writeFileAtomically() does, calls @p write with its name (the writer truncates and fills it), checks that the
