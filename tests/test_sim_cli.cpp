@@ -9,6 +9,9 @@
 #include <fstream>
 #include <iterator>
 
+#include <Eigen/LU>
+
+#include "sgtllc/io/kitti.h"
 #include "sgtllc/io/sequence.h"
 
 namespace sgtllc {
@@ -142,6 +145,18 @@ TEST_F(SimCli, SecondSessionThroughAFirstSessionsWorld) {
   EXPECT_THAT(text, HasSubstr("\nseed 5\n"));
   EXPECT_THAT(text, HasSubstr("\nfirst.seed 4\n"));
   EXPECT_EQ(io::SequenceDir(path("s2")).size(), 20u);
+  // The truth is in the first session's frame; the second session's odometry starts at the identity in its own.
+  const std::vector<Eigen::Matrix4d> truth = io::readKittiPoses(path("s2/poses.txt"));
+  const std::vector<Eigen::Matrix4d> odometry = io::readKittiPoses(path("s2/odometry.txt"));
+  ASSERT_EQ(odometry.size(), 20u);
+  EXPECT_FALSE(truth.front().isApprox(Eigen::Matrix4d::Identity(), 1e-6));  // the truth is in the first session's frame
+  EXPECT_TRUE(odometry.front().isApprox(Eigen::Matrix4d::Identity(), 1e-9)) << odometry.front();
+  // Its poses are the true ones relative to its own first frame, up to the drift (a scale error of a few per cent,
+  // a heading walk of milliradians).
+  const Eigen::Vector3d true_end = (truth.front().inverse() * truth.back()).topRightCorner(3, 1);
+  const Eigen::Vector3d odometry_end = odometry.back().topRightCorner(3, 1);
+  EXPECT_GT(true_end.norm(), 5.0);
+  EXPECT_LT((odometry_end - true_end).norm(), 0.1 * true_end.norm());
 
   // What cannot be a first session, or a second one.
   struct Case {

@@ -30,6 +30,24 @@ std::string row(const char* what, double odometry, double corrected, int digits)
   return std::string("| ") + what + " | " + fixed(odometry, digits) + " | " + fixed(corrected, digits) + " |\n";
 }
 
+/// @p ground_truth moved so its first pose is the odometry's first pose: a second simulated session's truth is in its
+/// first session's frame, its odometry starts at the identity in its own (docs/relocalization.md). A truth that
+/// already starts where the odometry does (within 1 cm and 0.1°: files of six decimals) is used as it is. Only the
+/// unaligned error and the plot as drawn see the difference; the aligned error, RPE and segments do not depend on
+/// the frame.
+std::vector<Eigen::Isometry3d> fromOdometryStart(const std::vector<Eigen::Isometry3d>& ground_truth,
+                                                 const Odometry& odometry) {
+  if (ground_truth.empty() || odometry.poses.empty()) return ground_truth;
+  const Eigen::Isometry3d move = odometry.poses.front() * ground_truth.front().inverse();
+  if (move.translation().norm() < 0.01 && Eigen::AngleAxisd(move.linear()).angle() < 0.1 * M_PI / 180.0) {
+    return ground_truth;
+  }
+  std::vector<Eigen::Isometry3d> out;
+  out.reserve(ground_truth.size());
+  for (const Eigen::Isometry3d& T : ground_truth) out.push_back(move * T);
+  return out;
+}
+
 }  // namespace
 
 TrajectoryMetrics trajectoryMetrics(const std::vector<Eigen::Isometry3d>& ground_truth,
@@ -55,7 +73,8 @@ Json trajectoryMetricsJson(const TrajectoryMetrics& m) {
 
 TrajectoryComparison compareTrajectories(const std::vector<Eigen::Isometry3d>& ground_truth, const Odometry& odometry,
                                          const Closing& closing) {
-  return {trajectoryMetrics(ground_truth, odometry.poses), trajectoryMetrics(ground_truth, closing.poses)};
+  const std::vector<Eigen::Isometry3d> truth = fromOdometryStart(ground_truth, odometry);
+  return {trajectoryMetrics(truth, odometry.poses), trajectoryMetrics(truth, closing.poses)};
 }
 
 Json comparisonJson(const TrajectoryComparison& c) {
@@ -91,12 +110,12 @@ std::string comparisonMarkdown(const TrajectoryComparison& c, const std::string&
 void plotClosing(const std::string& path, const std::vector<Eigen::Isometry3d>& ground_truth,
                  const Odometry& odometry, const std::vector<ClosingLoop>& loops, const Closing& closing) {
   eval::TrajectoryPlotData data;
-  data.ground_truth = ground_truth;
+  data.ground_truth = fromOdometryStart(ground_truth, odometry);
   data.odometry = odometry.poses;
   data.corrected = closing.poses;
   if (!ground_truth.empty()) {
-    const eval::AteResult o = eval::absoluteTrajectoryError(ground_truth, odometry.poses);
-    const eval::AteResult c = eval::absoluteTrajectoryError(ground_truth, closing.poses);
+    const eval::AteResult o = eval::absoluteTrajectoryError(data.ground_truth, odometry.poses);
+    const eval::AteResult c = eval::absoluteTrajectoryError(data.ground_truth, closing.poses);
     data.odometry_ate = {o.aligned.rmse, o.unaligned.rmse};
     data.corrected_ate = {c.aligned.rmse, c.unaligned.rmse};
   }

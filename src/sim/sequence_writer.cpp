@@ -131,7 +131,14 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   writeManifest(dir, sim.config(), overwrite);
   io::writeKittiCalib(dir + "/calib.txt", io::kittiProjections(), Tr, overwrite);
   io::writeKittiPoses(dir + "/poses.txt", cam, overwrite);
-  const std::vector<Eigen::Matrix4d> odometry = driftingOdometry(lidar0, options.odometry, sim.config().seed);
+  // Odometry knows nothing of another session: a second session's starts at the identity, in its own frame 0, as a
+  // real drive's would (poses.txt, the ground truth, stays in the first session's frame; docs/relocalization.md).
+  std::vector<Eigen::Matrix4d> own = lidar0;
+  if (sim.isSecondSession()) {
+    const Eigen::Matrix4d first_inv = lidar0.front().inverse();
+    for (Eigen::Matrix4d& T : own) T = first_inv * T;
+  }
+  const std::vector<Eigen::Matrix4d> odometry = driftingOdometry(own, options.odometry, sim.config().seed);
   std::vector<Eigen::Matrix4d> odometry_cam(n);
   for (int i = 0; i < n; ++i) odometry_cam[i] = Tr * odometry[i] * Tr_inv;
   io::writeKittiPoses(dir + "/odometry.txt", odometry_cam, overwrite);
@@ -157,7 +164,7 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   for (int i = 1; i < n; ++i) {
     stats.path_length += (lidar0[i].topRightCorner<3, 1>() - lidar0[i - 1].topRightCorner<3, 1>()).norm();
   }
-  stats.odometry_end_error = (odometry.back().topRightCorner<3, 1>() - lidar0.back().topRightCorner<3, 1>()).norm();
+  stats.odometry_end_error = (odometry.back().topRightCorner<3, 1>() - own.back().topRightCorner<3, 1>()).norm();
   for (const LoopPair& p : pairs) ++(p.loop ? stats.positives : stats.negatives);
   revisitStats(sim, lidar, pairs, pair_options.min_gap, stats);
 
