@@ -32,6 +32,15 @@ TEST(ScalarCodes, StepComesFromTheLargestTrainingValueAndCodesRoundAndClamp) {
   EXPECT_EQ(out, (std::vector<uint8_t>{128, 102, 0, 0, 51, 255}));
 }
 
+TEST(ScalarCodes, NegativeValuesWidenTheRangeBelowZero) {
+  // Range −0.5 … 0.5: one step is 1 / 255, so x codes as round((x + 0.5) · 255).
+  const std::vector<float> rows = {-0.5f, 0.0f, 0.5f, 0.25f, 0.1f};
+  std::vector<uint8_t> out;
+  const std::vector<float> row = {-0.5f, 0.0f, 0.5f, -1.0f, 0.25f};
+  ScalarCodes(rows.data(), 1, 5).encode(row.data(), &out);
+  EXPECT_EQ(out, (std::vector<uint8_t>{0, 128, 255, 0, 191}));  // 127.5 rounds up; 191.25 down
+}
+
 TEST(ScalarCodes, RowsOfZerosGiveZeroCodes) {
   const std::vector<float> rows(6, 0.0f);
   const ScalarCodes codes(rows.data(), 2, 3);

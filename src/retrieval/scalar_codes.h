@@ -8,10 +8,10 @@
 
 namespace sgtllc::internal {
 
-/// One uniform step for every dimension, from 0 to the largest value of the training rows (the keys are
-/// non-negative histograms of unit length): code = round(x / step), clamped to 0..255. One step for all makes the
-/// distance of two codes a sum of integer squares, which the compiler vectorises. A pure function of the training
-/// rows, so a map restored from its keys gets the same codes.
+/// One uniform step for every dimension over the range of the training rows' values, 0 included (the default keys
+/// are non-negative histograms of unit length, so the range is 0 to their largest value): code = round((x − low) /
+/// step), clamped to 0..255. One step for all makes the distance of two codes a sum of integer squares, which the
+/// compiler vectorises. A pure function of the training rows, so a map restored from its keys gets the same codes.
 class ScalarCodes {
  public:
   ScalarCodes() = default;
@@ -26,6 +26,7 @@ class ScalarCodes {
   static uint32_t distance(const uint8_t* a, const uint8_t* b, int dim);
 
  private:
+  float low_ = 0.0f;
   float inverse_step_ = 0.0f;
   int dim_ = 0;
 };
