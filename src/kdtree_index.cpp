@@ -119,10 +119,16 @@ class BoundedNearest {
 
 std::pair<int, float> PointKdTree::nearestWithin(const float* query, double max_d2) const {
   if (tree_->adaptor.count == 0 || !(max_d2 >= 0.0)) return {-1, std::numeric_limits<float>::infinity()};
-  // The smallest float above every float d with double(d) <= max_d2: "d < bound" is then "double(d) <= max_d2".
-  float largest = static_cast<float>(max_d2);
-  if (static_cast<double>(largest) > max_d2) largest = std::nextafter(largest, 0.0f);
-  BoundedNearest result(std::nextafter(largest, std::numeric_limits<float>::infinity()));
+  // The smallest float above every float d with double(d) <= max_d2: "d < bound" is then "double(d) <= max_d2"
+  // (beyond the largest float, every distance is within: the bound is +inf, and no cast out of range happens).
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  float bound = kInf;
+  if (max_d2 < static_cast<double>(std::numeric_limits<float>::max())) {
+    float largest = static_cast<float>(max_d2);
+    if (static_cast<double>(largest) > max_d2) largest = std::nextafter(largest, 0.0f);
+    bound = std::nextafter(largest, kInf);
+  }
+  BoundedNearest result(bound);
   tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
   if (result.index() < 0) return {-1, std::numeric_limits<float>::infinity()};
   return {result.index(), result.worstDist()};

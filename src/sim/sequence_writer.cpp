@@ -134,7 +134,7 @@ SequenceStats writeSequence(const Simulator& sim, const WriteOptions& options,
   // Odometry knows nothing of another session: a second session's starts at the identity, in its own frame 0, as a
   // real drive's would (poses.txt, the ground truth, stays in the first session's frame; docs/relocalization.md).
   std::vector<Eigen::Matrix4d> own = lidar0;
-  if (sim.isSecondSession()) {
+  if (sim.isSecondSession() && !own.empty()) {
     const Eigen::Matrix4d first_inv = lidar0.front().inverse();
     for (Eigen::Matrix4d& T : own) T = first_inv * T;
   }
