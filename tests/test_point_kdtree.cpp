@@ -50,7 +50,9 @@ TEST(PointKdTree, NearestKnnAndNearestWithinEqualBruteForce) {
     // A bound exactly at the nearest distance admits it; the next smaller double does not.
     const double at = static_cast<double>(all[0].first);
     EXPECT_EQ(tree.nearestWithin(query, at).first, j);
-    if (at > 0.0) EXPECT_EQ(tree.nearestWithin(query, std::nextafter(at, 0.0)).first, -1);
+    if (at > 0.0) {
+      EXPECT_EQ(tree.nearestWithin(query, std::nextafter(at, 0.0)).first, -1);
+    }
   }
   EXPECT_EQ(tree.nearestWithin(xyz.data(), -1.0).first, -1);  // a negative bound admits nothing
   const std::vector<float> none;
