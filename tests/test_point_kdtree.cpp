@@ -1,5 +1,6 @@
 // The kd-tree of fine registration (include/sgtllc/point_kdtree.h) against brute force on random points: the
-// nearest point, the k nearest, and the nearest within a bound (points exactly at the bound included, beyond it not).
+// nearest point, the k nearest, and the nearest within a bound (points exactly at the bound included, beyond it not;
+// among tied points the same one as nearest()).
 #include <algorithm>
 #include <limits>
 #include <random>
@@ -24,6 +25,8 @@ TEST(PointKdTree, NearestKnnAndNearestWithinEqualBruteForce) {
   std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
   std::vector<float> xyz(3 * 2000);
   for (float& v : xyz) v = coordinate(rng);
+  // Ties: every tenth point repeats the one before it, so a nearest point often has a twin at the same distance.
+  for (int i = 10; i < 2000; i += 10) std::copy_n(&xyz[3 * (i - 1)], 3, &xyz[3 * i]);
   const PointKdTree tree(&xyz);
   std::vector<uint32_t> near;
   for (int q = 0; q < 300; ++q) {

@@ -1,5 +1,5 @@
-// One-byte codes of retrieval keys (algorithm §5 "Retrieval at scale"): the step from the training rows' largest
-// value, rounding and clamping by hand-computed codes, and the code distance against a brute-force sum and against
+// One-byte codes of retrieval keys (algorithm §5 "Retrieval at scale"): the step from the training rows' range (0
+// included), rounding and clamping by hand-computed codes, and the code distance against a brute-force sum and against
 // the exact distance it estimates.
 #include <cmath>
 #include <limits>

@@ -71,7 +71,8 @@ class FrameDatabase {
   /// Returns fewer if fewer frames are eligible, none if last < 0. With RetrievalMethod::kKdTree the tree is
   /// extended here, and with kIvf the inverted file (trained at retrieval.ivf_train_frames frames; until then the
   /// search is the exact scan), so concurrent queries on one database are not safe (the detector queries from one
-  /// thread). kIvf is approximate: a frame outside the retrieval.ivf_probe nearest lists is not found.
+  /// thread). kIvf is approximate: a frame outside the retrieval.ivf_probe nearest lists is not found, nor, rarely,
+  /// one that the one-byte codes of the keys put behind 4·k others of the scanned lists.
   std::vector<RetrievedFrame> query(const std::vector<float>& global, int last, int k) const;
 
   /// The inverted file's state once trained (kIvf), else nothing; restoreIvf() puts a saved one back (a map

@@ -14,6 +14,14 @@ namespace sgtllc::map::detail {
 
 class EncodedMap {
  public:
+  EncodedMap() = default;
+  // A copy's views would point into the original's strings: moves only (a moved deque keeps its elements where
+  // they are, so the views stay valid).
+  EncodedMap(const EncodedMap&) = delete;
+  EncodedMap& operator=(const EncodedMap&) = delete;
+  EncodedMap(EncodedMap&&) = default;
+  EncodedMap& operator=(EncodedMap&&) = default;
+
   /// The file's bytes in order; valid while this object and the map it was encoded from live.
   const std::vector<std::string_view>& pieces() const { return pieces_; }
   uint64_t size() const { return size_; }

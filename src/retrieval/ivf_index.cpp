@@ -92,10 +92,15 @@ void IvfIndex::update() {
     if (from == 0) {
       rebuildLists();
     } else {
-      for (int f = from; f < rows; ++f) {
-        const int list = state_.list_of_frame[f];
-        lists_[list].push_back(f);
-        if (coded_) codes_.encode(rows_->data() + static_cast<size_t>(f) * dim_, &list_codes_[list]);
+      try {
+        for (int f = from; f < rows; ++f) {
+          const int list = state_.list_of_frame[f];
+          lists_[list].push_back(f);
+          if (coded_) codes_.encode(rows_->data() + static_cast<size_t>(f) * dim_, &list_codes_[list]);
+        }
+      } catch (...) {
+        coded_ = false;  // lists and codes may disagree now (out of memory): the next update encodes them anew
+        throw;
       }
     }
   }
@@ -130,29 +135,32 @@ void IvfIndex::knn(const float* query, int last, int k, int probe, std::vector<s
   }
   const size_t scan = std::min(centres.size(), static_cast<size_t>(probe));
   std::partial_sort(centres.begin(), centres.begin() + scan, centres.end(), closer);
-  std::vector<std::pair<int, float>> hits;
+  std::vector<std::pair<uint32_t, int>> estimates;  // (code distance, row): integers, exact at any size
   std::vector<uint8_t> query_code;
   codes_.encode(query, &query_code);
   for (size_t c = 0; c < scan; ++c) {
     const std::vector<int32_t>& list = lists_[centres[c].first];
     const uint8_t* code = list_codes_[centres[c].first].data();
     for (size_t i = 0; i < list.size() && list[i] <= last; ++i, code += dim_) {  // lists are ascending
-      hits.emplace_back(list[i], static_cast<float>(ScalarCodes::distance(query_code.data(), code, dim_)));
+      estimates.emplace_back(ScalarCodes::distance(query_code.data(), code, dim_), list[i]);
     }
   }
-  // The nearest estimates, then their exact distances; the order (distance, row) is total, so the frames kept do
+  // The nearest estimates, then their exact distances; the order (estimate, row) is total, so the frames kept do
   // not depend on the order the lists were scanned in.
-  const size_t compared = std::min(hits.size(), static_cast<size_t>(kRerank) * static_cast<size_t>(std::max(k, 0)));
-  std::nth_element(hits.begin(), hits.begin() + compared, hits.end(), closer);
-  hits.resize(compared);
+  const size_t compared =
+      std::min(estimates.size(), static_cast<size_t>(kRerank) * static_cast<size_t>(std::max(k, 0)));
+  std::nth_element(estimates.begin(), estimates.begin() + compared, estimates.end());
+  std::vector<std::pair<int, float>> hits(compared);
   const size_t row_bytes = static_cast<size_t>(dim_) * sizeof(float);
-  for (size_t i = 0; i < hits.size(); ++i) {
+  for (size_t i = 0; i < compared; ++i) {
     // The frames lie far apart in the key matrix: fetch the next one's key while this one is compared.
-    if (i + 1 < hits.size()) {
-      const char* next = reinterpret_cast<const char*>(rows_->data() + static_cast<size_t>(hits[i + 1].first) * dim_);
+    if (i + 1 < compared) {
+      const size_t next_row = static_cast<size_t>(estimates[i + 1].second);
+      const char* next = reinterpret_cast<const char*>(rows_->data() + next_row * dim_);
       for (size_t b = 0; b < row_bytes; b += 64) __builtin_prefetch(next + b);
     }
-    hits[i].second = squaredDistance(rows_->data() + static_cast<size_t>(hits[i].first) * dim_, query, dim_);
+    const int row = estimates[i].second;
+    hits[i] = {row, squaredDistance(rows_->data() + static_cast<size_t>(row) * dim_, query, dim_)};
   }
   const size_t keep = std::min(hits.size(), static_cast<size_t>(k));
   std::partial_sort(hits.begin(), hits.begin() + keep, hits.end(), closer);
