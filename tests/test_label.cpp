@@ -165,12 +165,10 @@ TEST(Segmentation, TwoBoxesApartAreTwoSegments) {
   EXPECT_EQ(s.point_voxel.back(), -1);
 }
 
-// A real scan's segments against a brute-force reference: voxels in a std::map, each joined to every occupied
-// voxel of its 26-neighbourhood. Two points share a segment iff they share a reference component.
-TEST(Segmentation, RealScanMatchesBruteForceComponents) {
-  const std::vector<Eigen::Vector3f> pts = io::readKittiBin(test::dataPath("kitti/00/velodyne/004501.bin"));
+// Segments against a brute-force reference: voxels in a std::map, each joined to every occupied voxel of its
+// 26-neighbourhood. Two points share a segment iff they share a reference component; returns the segment count.
+int expectBruteForceComponents(const std::vector<Eigen::Vector3f>& pts, double leaf) {
   const std::vector<uint8_t> use(pts.size(), 1);
-  const double leaf = 0.4;
   const label::Segmentation s = label::segmentVoxels(pts, use, leaf);
   std::map<std::array<int, 3>, int> voxel_of;
   std::vector<int> point_voxel(pts.size());
@@ -201,13 +199,33 @@ TEST(Segmentation, RealScanMatchesBruteForceComponents) {
   // The partitions agree: a one-to-one map between reference roots and segment ids.
   std::map<int, int> segment_of_root, root_of_segment;
   for (size_t i = 0; i < pts.size(); ++i) {
-    ASSERT_GE(s.point_voxel[i], 0);
+    EXPECT_GE(s.point_voxel[i], 0);
+    if (s.point_voxel[i] < 0) return -1;
     const int seg = s.voxel_segment[s.point_voxel[i]], r = root(point_voxel[i]);
-    ASSERT_EQ(segment_of_root.emplace(r, seg).first->second, seg) << "point " << i;
-    ASSERT_EQ(root_of_segment.emplace(seg, r).first->second, r) << "point " << i;
+    EXPECT_EQ(segment_of_root.emplace(r, seg).first->second, seg) << "point " << i;
+    EXPECT_EQ(root_of_segment.emplace(seg, r).first->second, r) << "point " << i;
   }
   EXPECT_EQ(static_cast<int>(segment_of_root.size()), s.num_segments);
-  EXPECT_GT(s.num_segments, 100);  // a real scene, not one blob
+  return s.num_segments;
+}
+
+TEST(Segmentation, RealScanMatchesBruteForceComponents) {
+  const std::vector<Eigen::Vector3f> pts = io::readKittiBin(test::dataPath("kitti/00/velodyne/004501.bin"));
+  EXPECT_GT(expectBruteForceComponents(pts, 0.4), 100);  // a real scene, not one blob
+}
+
+// The neighbour search answers a column's three heights from one word of 64 bits, a bit per height modulo 64:
+// voxels 64 (or 128) heights apart share a bit. Sparse points in tall thin columns, below and above 0, make many
+// such aliases, which must cost a probe and never a join.
+TEST(Segmentation, TallColumnsMatchBruteForceComponents) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> xy(-0.3f, 0.3f), z(-20.0f, 20.0f);
+  std::vector<Eigen::Vector3f> pts;
+  for (int i = 0; i < 1500; ++i) pts.emplace_back(xy(rng), xy(rng), z(rng));
+  EXPECT_GT(expectBruteForceComponents(pts, 0.1), 100);
+  // Two voxels of neighbouring columns 64 heights apart: the same bit, not neighbours.
+  const std::vector<Eigen::Vector3f> aliased = {{0.05f, 0.05f, 0.05f}, {0.15f, 0.05f, 6.45f}, {0.05f, 0.15f, -6.35f}};
+  EXPECT_EQ(expectBruteForceComponents(aliased, 0.1), 3);
 }
 
 TEST(GeometricLabeller, RealScanSameOnEveryThreadAndRun) {

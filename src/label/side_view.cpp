@@ -137,9 +137,11 @@ std::vector<double> occludedSides(const std::vector<Eigen::Vector3f>& points, co
   std::vector<std::pair<int, Seen>> kept;
   Seen s;
   for (size_t i = 0; i < points.size(); ++i) {
-    if (!see(points[i], use[i], &s)) continue;
-    const int b = binOf(s.angle);
-    if (wanted[b]) kept.emplace_back(b, s);
+    // The bin first: most points lie in no window, and their range and slope (a root and a division) are not needed.
+    const Eigen::Vector3f& p = points[i];
+    if (!use[i] || !p.allFinite()) continue;
+    const int b = binOf(static_cast<float>(diamondAngle<double>(p.x(), p.y())));
+    if (wanted[b] && see(p, use[i], &s)) kept.emplace_back(b, s);
   }
   std::vector<int> start(kBins + 1, 0);
   for (const auto& k : kept) ++start[k.first + 1];
