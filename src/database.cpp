@@ -134,8 +134,15 @@ size_t FrameDatabase::frameBytes(int index) const {
          static_cast<size_t>(impl_->dim) * sizeof(float);
 }
 
-size_t FrameDatabase::totalBytes() const {
+size_t FrameDatabase::searchBytes() const {
   size_t bytes = 0;
+  if (impl_->ivf) bytes += impl_->ivf->bytes();
+  if (impl_->kdtree) bytes += impl_->kdtree->bytes();
+  return bytes;
+}
+
+size_t FrameDatabase::totalBytes() const {
+  size_t bytes = searchBytes();
   for (int f = 0; f < size(); ++f) bytes += frameBytes(f);
   return bytes;
 }

@@ -47,6 +47,15 @@ void KdTreeIndex::extendTo(int last) {
   indexed_ = last + 1;
 }
 
+size_t KdTreeIndex::bytes() const {
+  // The adaptor's per-row tree numbers (one int a row) are private to nanoflann: counted at their size.
+  size_t bytes = sizeof(Tree) + static_cast<size_t>(indexed_) * sizeof(int);
+  for (const auto& sub : tree_->index.getAllIndices()) {
+    bytes += sizeof(sub) + sub.pool.usedMemory + sub.pool.wastedMemory + sub.vAcc.capacity() * sizeof(uint32_t);
+  }
+  return bytes;
+}
+
 void KdTreeIndex::knn(const float* query, int k, std::vector<std::pair<int, float>>* out) const {
   const size_t want = std::min<size_t>(static_cast<size_t>(k), static_cast<size_t>(indexed_));
   if (want == 0) return;

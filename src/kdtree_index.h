@@ -23,6 +23,8 @@ class KdTreeIndex {
   int size() const { return indexed_; }
   /// The k nearest rows (squared L2), nearest first, ties to the lower index. Appends (index, distance²) pairs.
   void knn(const float* query, int k, std::vector<std::pair<int, float>>* out) const;
+  /// Bytes the tree holds beside the rows: its nodes (nanoflann's pools) and index arrays.
+  size_t bytes() const;
 
  private:
   struct Tree;

@@ -205,6 +205,15 @@ TEST(FrameDatabase, ByteAccounting) {
   EXPECT_LT(db.frameBytes(0), db.frameBytes(1));
   EXPECT_LT(db.frameBytes(1), db.frameBytes(2));
   EXPECT_EQ(FrameDatabase().totalBytes(), 0u);
+  // A k-d tree, once a query builds it, holds an index per frame at least, counted beside the frames.
+  FrameDatabase tree(RetrievalMethod::kKdTree);
+  for (int f = 0; f < db.size(); ++f) tree.add(frame(std::vector<float>(db.global(f), db.global(f) + kDim), 3));
+  EXPECT_EQ(tree.searchBytes(), 0u);
+  tree.query(std::vector<float>(db.global(0), db.global(0) + kDim), tree.size() - 1, 2);
+  EXPECT_GE(tree.searchBytes(), tree.size() * sizeof(uint32_t));
+  size_t frames = 0;
+  for (int f = 0; f < tree.size(); ++f) frames += tree.frameBytes(f);
+  EXPECT_EQ(tree.totalBytes(), frames + tree.searchBytes());
 }
 
 TEST(FrameDatabase, MovedDatabaseKeepsItsFrames) {

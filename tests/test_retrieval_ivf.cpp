@@ -94,6 +94,21 @@ TEST_F(IvfSearch, IsTheExactScanUntilTrained) {
   EXPECT_FALSE(ivf.ivfState().has_value());
 }
 
+// The database's bytes count the inverted file beside the frames: at least a one-byte code per key value once the
+// lists are coded, and the centroids' floats; the linear scan holds nothing beside its frames.
+TEST_F(IvfSearch, ByteAccountingCountsTheListsAndCodes) {
+  const FrameDatabase exact = fill(RetrievalConfig{}, 1, 3000);
+  const FrameDatabase ivf = fill(ivfConfig(1000), 1, 3000);
+  EXPECT_EQ(exact.searchBytes(), 0u);
+  const size_t dim = static_cast<size_t>(ivf.globalDimension());
+  const IvfState state = *ivf.ivfState();
+  EXPECT_GE(ivf.searchBytes(), 3000 * dim + state.centroids.size() * sizeof(float) + 3000 * sizeof(int32_t));
+  EXPECT_LT(ivf.searchBytes(), 2 * (3000 * dim + state.centroids.size() * sizeof(float)) + 3000 * 16);
+  size_t frames = 0;
+  for (int f = 0; f < ivf.size(); ++f) frames += ivf.frameBytes(f);
+  EXPECT_EQ(ivf.totalBytes(), frames + ivf.searchBytes());
+}
+
 TEST_F(IvfSearch, FindsTheExactTop15WithExactDistances) {
   const size_t n = scene().frames.size();
   const FrameDatabase exact = fill(RetrievalConfig{}, 1, n);

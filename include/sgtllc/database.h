@@ -83,7 +83,10 @@ class FrameDatabase {
 
   /// Bytes held for frame @p index: its nodes, its global descriptor and per-frame bookkeeping.
   size_t frameBytes(int index) const;
-  /// Bytes held for all frames.
+  /// Bytes held by the search structure beside the frames: the inverted file's centroids, lists and one-byte
+  /// codes (kIvf), the k-d tree's nodes (kKdTree); 0 for the linear scan and before the first query builds it.
+  size_t searchBytes() const;
+  /// Bytes held for all frames and the search structure.
   size_t totalBytes() const;
 
  private:

@@ -167,6 +167,14 @@ void IvfIndex::knn(const float* query, int last, int k, int probe, std::vector<s
   out->insert(out->end(), hits.begin(), hits.begin() + keep);
 }
 
+size_t IvfIndex::bytes() const {
+  size_t bytes = sizeof(IvfIndex) + state_.centroids.capacity() * sizeof(float) +
+                 state_.list_of_frame.capacity() * sizeof(int32_t);
+  for (const auto& list : lists_) bytes += sizeof(list) + list.capacity() * sizeof(int32_t);
+  for (const auto& codes : list_codes_) bytes += sizeof(codes) + codes.capacity();
+  return bytes;
+}
+
 void IvfIndex::restore(IvfState state) {
   const size_t rows = rows_->size() / dim_;
   if (state.lists < 1 || state.centroids.size() != static_cast<size_t>(state.lists) * dim_) {

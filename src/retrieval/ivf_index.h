@@ -47,6 +47,9 @@ class IvfIndex {
   const IvfState& state() const { return state_; }
   void restore(IvfState state);
 
+  /// Bytes the index holds beside the rows: centroids, each frame's list, the lists and their codes.
+  size_t bytes() const;
+
  private:
   void train();
   int nearestList(const float* row) const;
