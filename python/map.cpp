@@ -19,10 +19,7 @@ map::Map copyMap(const map::Map& m) {
   copy.names = m.names;
   copy.poses = m.poses;
   copy.footprints = m.footprints;
-  for (int f = 0; f < m.size(); ++f) {
-    const float* key = m.database.global(f);
-    copy.database.add(StoredFrame{m.database.nodes(f), std::vector<float>(key, key + m.database.globalDimension())});
-  }
+  copy.database = m.database.copy();  // with a trained inverted file, so Python searches as the CLI does
   return copy;
 }
 

@@ -37,6 +37,14 @@ FrameDatabase::~FrameDatabase() = default;
 FrameDatabase::FrameDatabase(FrameDatabase&&) noexcept = default;
 FrameDatabase& FrameDatabase::operator=(FrameDatabase&&) noexcept = default;
 
+FrameDatabase FrameDatabase::copy() const {
+  FrameDatabase out(impl_->retrieval, impl_->threads);
+  out.impl_->method = impl_->method;
+  if (size() > 0) out.assign(impl_->nodes, std::vector<float>(impl_->globals));  // a copy's capacity is its size
+  if (std::optional<IvfState> ivf = ivfState()) out.restoreIvf(std::move(*ivf));
+  return out;
+}
+
 void FrameDatabase::setSearch(const RetrievalConfig& retrieval, int threads) {
   std::optional<IvfState> kept = ivfState();
   impl_->method = retrieval.method;

@@ -109,6 +109,21 @@ TEST_F(IvfSearch, ByteAccountingCountsTheListsAndCodes) {
   EXPECT_EQ(ivf.totalBytes(), frames + ivf.searchBytes());
 }
 
+// A copy keeps the trained inverted file (Python's Map and relocalizer copy maps this way) and answers every query
+// as the original; adding to the copy leaves the original as it was.
+TEST_F(IvfSearch, ACopyKeepsTheTrainedIndex) {
+  const FrameDatabase ivf = fill(ivfConfig(1000), 1, 3000);
+  FrameDatabase copy = ivf.copy();
+  ASSERT_TRUE(copy.ivfState().has_value());
+  EXPECT_EQ(copy.ivfState()->centroids, ivf.ivfState()->centroids);
+  EXPECT_EQ(copy.ivfState()->list_of_frame, ivf.ivfState()->list_of_frame);
+  for (const auto& q : scene().queries) EXPECT_TRUE(sameHits(copy.query(q, 2999, 15), ivf.query(q, 2999, 15)));
+  copy.add(StoredFrame{{}, scene().frames[3000]});
+  EXPECT_EQ(copy.size(), 3001);
+  EXPECT_EQ(ivf.size(), 3000);
+  EXPECT_EQ(ivf.ivfState()->list_of_frame.size(), 3000u);
+}
+
 TEST_F(IvfSearch, FindsTheExactTop15WithExactDistances) {
   const size_t n = scene().frames.size();
   const FrameDatabase exact = fill(RetrievalConfig{}, 1, n);

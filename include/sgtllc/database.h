@@ -46,6 +46,10 @@ class FrameDatabase {
   FrameDatabase(FrameDatabase&&) noexcept;
   FrameDatabase& operator=(FrameDatabase&&) noexcept;
 
+  /// A deep copy: the frames (at their exact size), the search method and its parameters, and a trained inverted
+  /// file's state, so the copy answers every query as this database does (a k-d tree is rebuilt at its first query).
+  FrameDatabase copy() const;
+
   /// Appends a frame; returns its index. Throws std::invalid_argument if the global descriptor's length differs
   /// from the first frame's.
   int add(StoredFrame frame);

@@ -140,23 +140,11 @@ Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std
   // A map of frames that all lack one (node input, the check off) stores no footprint section.
   const bool any = std::any_of(footprints.begin(), footprints.end(), [](const Footprint& f) { return !f.empty(); });
   if (any) map.footprints = std::move(footprints);
-  map.database = FrameDatabase(config.retrieval, config.threads);
   // One copy of the keys at their exact size (adding frame by frame grows the storage by doubling: three times
-  // the keys at the last growth, gigabytes for a million frames; BENCHMARKS.md "Retrieval at scale").
-  const size_t n = static_cast<size_t>(database.size());
-  if (n > 0) {
-    std::vector<std::vector<Node>> nodes;
-    nodes.reserve(n);
-    for (size_t f = 0; f < n; ++f) nodes.push_back(database.nodes(static_cast<int>(f)));
-    const size_t dim = static_cast<size_t>(database.globalDimension());
-    std::vector<float> keys(n * dim);
-    for (size_t f = 0; f < n; ++f) std::copy_n(database.global(static_cast<int>(f)), dim, keys.begin() + f * dim);
-    map.database.assign(std::move(nodes), std::move(keys));
-  }
-  // A trained inverted file goes into the map as it is, so a loaded map searches as the saved detector did.
-  if (std::optional<IvfState> ivf = database.ivfState(); ivf && config.retrieval.method == RetrievalMethod::kIvf) {
-    map.database.restoreIvf(std::move(*ivf));
-  }
+  // the keys at the last growth, gigabytes for a million frames; BENCHMARKS.md "Retrieval at scale"). A trained
+  // inverted file goes into the map as it is, so a loaded map searches as the saved detector did.
+  map.database = database.copy();
+  map.database.setSearch(config.retrieval, config.threads);
   checkFrames(map, "map");
   return map;
 }
