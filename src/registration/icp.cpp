@@ -23,6 +23,10 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 constexpr int kMinPairs = 6;  // six unknowns
 constexpr double kCoarseConvergence = 1e-3;  // m and rad: where the coarse stage hands over to the fine one
+/// Query points the coarse stage pairs, at most (an even stride over the query): it only has to bring the pose
+/// within the fine stage's reach, and 2,000 points fix six unknowns as well as 8,000 do there (BENCHMARKS.md,
+/// "Fine registration").
+constexpr size_t kCoarsePoints = 2000;
 
 /// Unit normals of the target points from the covariance of their k nearest neighbours (smallest eigenvector),
 /// or zero where the neighbourhood is a line or a point (no plane to project on). Computed on first use: the
@@ -78,7 +82,8 @@ struct Linearisation {
   double sum_r2 = 0.0;   ///< unweighted, for the RMSE
   double sum_wr2 = 0.0;  ///< weighted, for σ of the information
   double sum_w = 0.0;
-  int pairs = 0;
+  int pairs = 0;   ///< pairs with a plane (a target normal)
+  int paired = 0;  ///< query points with a target point within the distance, with or without a plane
 };
 
 Linearisation linearise(const std::vector<Eigen::Vector3f>& query, const std::vector<float>& rows,
@@ -94,6 +99,7 @@ Linearisation linearise(const std::vector<Eigen::Vector3f>& query, const std::ve
     const Eigen::Vector3f xf = x.cast<float>();
     const int j = tree.nearestWithin(xf.data(), max_d2).first;
     if (j < 0) continue;
+    ++lin.paired;
     const Eigen::Vector3d n = normal(static_cast<size_t>(j)).cast<double>();
     if (n.isZero()) continue;
     const Eigen::Vector3d q = Eigen::Vector3f(&rows[3 * static_cast<size_t>(j)]).cast<double>();
@@ -112,18 +118,6 @@ Linearisation linearise(const std::vector<Eigen::Vector3f>& query, const std::ve
     ++lin.pairs;
   }
   return lin;
-}
-
-/// Share of query points with a target point within @p max_distance at @p T.
-double fitnessAt(const std::vector<Eigen::Vector3f>& query, const PointKdTree& tree,
-                 const Eigen::Matrix4d& T, double max_distance) {
-  const Eigen::Matrix4f Tf = T.cast<float>();
-  int paired = 0;
-  for (const Eigen::Vector3f& p : query) {
-    const Eigen::Vector3f x = Tf.topLeftCorner<3, 3>() * p + Tf.topRightCorner<3, 1>();
-    paired += tree.nearestWithin(x.data(), max_distance * max_distance).first >= 0;
-  }
-  return static_cast<double>(paired) / static_cast<double>(query.size());
 }
 
 /// The normal matrix is singular (or nearly) when the pairs leave a direction free: relative to its largest
@@ -183,14 +177,18 @@ Refinement refinePose(const std::vector<Eigen::Vector3f>& query, const std::vect
   std::vector<double> stages;
   if (config.coarse_correspondence > config.max_correspondence) stages.push_back(config.coarse_correspondence);
   stages.push_back(config.max_correspondence);
+  std::vector<Eigen::Vector3f> coarse_query;
+  const size_t stride = (query.size() + kCoarsePoints - 1) / kCoarsePoints;
+  for (size_t i = 0; i < query.size(); i += stride) coarse_query.push_back(query[i]);
   for (size_t stage = 0; stage < stages.size(); ++stage) {
     const double distance = stages[stage];
+    const std::vector<Eigen::Vector3f>& points = stage + 1 < stages.size() ? coarse_query : query;
     // The coarse stage only has to bring the pose into the fine stage's reach: it stops at millimetre steps.
     const double tolerance = stage + 1 < stages.size() ? std::max(config.convergence, kCoarseConvergence)
                                                         : config.convergence;
     converged = false;
     for (int it = 0; it < config.max_iterations && !converged; ++it) {
-      const Linearisation lin = linearise(query, rows, normal, tree, T, distance, config.kernel);
+      const Linearisation lin = linearise(points, rows, normal, tree, T, distance, config.kernel);
       if (lin.pairs < kMinPairs) return finish(RefinementStatus::kTooFewPoints);
       if (degenerate(lin.H)) return finish(RefinementStatus::kDegenerate);
       const Vector6d delta = -lin.H.ldlt().solve(lin.g);
@@ -212,7 +210,7 @@ Refinement refinePose(const std::vector<Eigen::Vector3f>& query, const std::vect
   const Linearisation last = linearise(query, rows, normal, tree, T, config.max_correspondence, config.kernel);
   if (last.pairs < kMinPairs) return finish(RefinementStatus::kTooFewPoints);
   out.T_match_query = T;
-  out.fitness = fitnessAt(query, tree, T, config.max_correspondence);
+  out.fitness = static_cast<double>(last.paired) / static_cast<double>(query.size());
   out.rmse_m = std::sqrt(last.sum_r2 / last.pairs);
   const Eigen::Matrix4d moved = T_seed.inverse() * T;
   const double moved_deg = Eigen::AngleAxisd(Eigen::Matrix3d(moved.topLeftCorner<3, 3>())).angle() * 180.0 / M_PI;
