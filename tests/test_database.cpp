@@ -205,15 +205,47 @@ TEST(FrameDatabase, ByteAccounting) {
   EXPECT_LT(db.frameBytes(0), db.frameBytes(1));
   EXPECT_LT(db.frameBytes(1), db.frameBytes(2));
   EXPECT_EQ(FrameDatabase().totalBytes(), 0u);
-  // A k-d tree, once a query builds it, holds an index per frame at least, counted beside the frames.
+  // A k-d tree, once a query builds it, is counted beside the frames, and grows with them by at least a row index
+  // and a tree number (two 4-byte integers) per frame.
+  const Rows rows = makeRows(10, false, 600);
   FrameDatabase tree(RetrievalMethod::kKdTree);
-  for (int f = 0; f < db.size(); ++f) tree.add(frame(std::vector<float>(db.global(f), db.global(f) + kDim), 3));
+  for (int f = 0; f < 100; ++f) tree.add(frame(rows[f], 3));
   EXPECT_EQ(tree.searchBytes(), 0u);
-  tree.query(std::vector<float>(db.global(0), db.global(0) + kDim), tree.size() - 1, 2);
-  EXPECT_GE(tree.searchBytes(), tree.size() * sizeof(uint32_t));
+  tree.query(rows[0], 99, 2);
+  const size_t small = tree.searchBytes();
+  EXPECT_GT(small, 0u);
+  for (int f = 100; f < 600; ++f) tree.add(frame(rows[f], 3));
+  tree.query(rows[0], 599, 2);
+  EXPECT_GE(tree.searchBytes(), small + 500 * 2 * sizeof(uint32_t));
   size_t frames = 0;
   for (int f = 0; f < tree.size(); ++f) frames += tree.frameBytes(f);
   EXPECT_EQ(tree.totalBytes(), frames + tree.searchBytes());
+}
+
+// A copy answers every query as the original, with either exact method (the tree is rebuilt at its first query),
+// keeps the method, and grows apart from the original.
+TEST(FrameDatabase, ACopyAnswersAsTheOriginal) {
+  const Rows rows = makeRows(11, false, 200);
+  for (RetrievalMethod method : kMethods) {
+    FrameDatabase db = makeDatabase(rows, method);
+    db.query(rows[3], 199, 5);  // the original's tree built before the copy
+    FrameDatabase copy = db.copy();
+    EXPECT_EQ(copy.size(), 200);
+    EXPECT_EQ(copy.searchBytes(), 0u);  // nothing built yet
+    for (int q = 0; q < 200; q += 37) {
+      const auto a = copy.query(rows[q], 199, 7), b = db.query(rows[q], 199, 7);
+      ASSERT_EQ(a.size(), b.size());
+      for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].frame, b[i].frame);
+        EXPECT_EQ(a[i].distance2, b[i].distance2);
+      }
+    }
+    EXPECT_EQ(copy.searchBytes() > 0, method == RetrievalMethod::kKdTree);
+    copy.add(frame(rows[0], 2));
+    EXPECT_EQ(copy.size(), 201);
+    EXPECT_EQ(db.size(), 200);
+    for (int f = 0; f < 200; ++f) EXPECT_EQ(copy.nodes(f).size(), db.nodes(f).size());
+  }
 }
 
 TEST(FrameDatabase, MovedDatabaseKeepsItsFrames) {

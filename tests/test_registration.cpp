@@ -194,6 +194,21 @@ TEST(RegistrationGeometry, OnePlaneIsDegenerateAndThreePlanesGiveTheAnalyticInfo
   EXPECT_GT(eig.eigenvalues()(0), 0.0);
 }
 
+// The coarse stage pairs an even stride of 2,000 of 8,000 query points; where that subsample pairs nothing (here
+// every 4th point lies far from the match) the stage takes the whole query instead of giving up.
+TEST(RegistrationGeometry, ACoarseSubsampleThatPairsNothingFallsBackToTheWholeQuery) {
+  const Eigen::Vector3f x = Eigen::Vector3f::UnitX(), y = Eigen::Vector3f::UnitY(), z = Eigen::Vector3f::UnitZ();
+  std::vector<Eigen::Vector3f> box = patch({0, 0, 0}, x, y, 30);
+  for (const auto& p : patch({10, 0.5, 0.5}, y, z, 30)) box.push_back(p);
+  for (const auto& p : patch({0.5, 10, 0.5}, x, z, 30)) box.push_back(p);
+  std::vector<Eigen::Vector3f> query;
+  for (int i = 0; i < 8000; ++i) query.push_back(i % 4 == 0 ? Eigen::Vector3f(500, 500, 500) : box[i % box.size()]);
+  const Refinement r = refinePose(query, box, test::rigid(0, 0, 1, {0.3, -0.2, 0.1}), RegistrationConfig{});
+  ASSERT_TRUE(r.used()) << refinementStatusName(r.status);
+  EXPECT_LT(poseError(r.T_match_query, Eigen::Matrix4d::Identity()).translation_m, 1e-4);
+  EXPECT_NEAR(r.fitness, 0.75, 1e-9);  // the far quarter pairs with nothing
+}
+
 TEST(RegistrationCloud, CompactCloudKeepsCentimetresInSixBytesAPoint) {
   const std::vector<Eigen::Vector3f> points = {{1.234f, -5.678f, 0.004f}, {327.6f, -327.6f, 0.0f}, {400.0f, 0, 0}};
   const CompactCloud c = compactCloud(points);

@@ -122,6 +122,19 @@ TEST_F(IvfSearch, ACopyKeepsTheTrainedIndex) {
   EXPECT_EQ(copy.size(), 3001);
   EXPECT_EQ(ivf.size(), 3000);
   EXPECT_EQ(ivf.ivfState()->list_of_frame.size(), 3000u);
+  // Untrained, the copy is the exact scan as the original is, and trains as the original would.
+  const FrameDatabase untrained = fill(ivfConfig(1000), 1, 900);
+  FrameDatabase untrained_copy = untrained.copy();
+  EXPECT_FALSE(untrained_copy.ivfState().has_value());
+  for (const auto& q : scene().queries) {
+    EXPECT_TRUE(sameHits(untrained_copy.query(q, 899, 15), untrained.query(q, 899, 15)));
+  }
+  for (size_t f = 900; f < 1000; ++f) untrained_copy.add(StoredFrame{{}, scene().frames[f]});
+  const FrameDatabase trained = fill(ivfConfig(1000), 1, 1000);
+  untrained_copy.query(scene().queries[0], 999, 15);
+  trained.query(scene().queries[0], 999, 15);
+  ASSERT_TRUE(untrained_copy.ivfState().has_value());
+  EXPECT_EQ(untrained_copy.ivfState()->centroids, trained.ivfState()->centroids);
 }
 
 TEST_F(IvfSearch, FindsTheExactTop15WithExactDistances) {

@@ -88,7 +88,8 @@ class FrameDatabase {
   /// Bytes held for frame @p index: its nodes, its global descriptor and per-frame bookkeeping.
   size_t frameBytes(int index) const;
   /// Bytes held by the search structure beside the frames: the inverted file's centroids, lists and one-byte
-  /// codes (kIvf), the k-d tree's nodes (kKdTree); 0 for the linear scan and before the first query builds it.
+  /// codes (kIvf; from the first query on, its lists once trained), the k-d tree's nodes (kKdTree, from the
+  /// first query on); 0 for the linear scan.
   size_t searchBytes() const;
   /// Bytes held for all frames and the search structure.
   size_t totalBytes() const;

@@ -43,8 +43,9 @@ GroundResult segmentGround(const std::vector<Eigen::Vector3f>& points, const Gro
     const int s = std::min(sectors - 1, static_cast<int>(diamondAngle(p.x(), p.y()) * (0.25f * sectors)));
     const int c = s * bins + b;
     cell[i] = c;
-    // Without a branch (a mask, which compilers keep): whether a point is its cell's lowest so far is a coin toss the
-    // processor cannot predict; the branch was a fifth of the ground's time (BENCHMARKS.md, "Within 10 ms at p99").
+    // Without a branch (a mask: GCC kept a branch for the conditional form): whether a point is its cell's lowest so
+    // far is a coin toss the processor cannot predict; the branch was a fifth of the ground's time (BENCHMARKS.md,
+    // "Within 10 ms at p99").
     const int lower = -static_cast<int>(p.z() < lowest[c]);
     lowest[c] = std::min(lowest[c], p.z());
     lowest_point[c] = (lowest_point[c] & ~lower) | (static_cast<int>(i) & lower);

@@ -178,17 +178,26 @@ Refinement refinePose(const std::vector<Eigen::Vector3f>& query, const std::vect
   if (config.coarse_correspondence > config.max_correspondence) stages.push_back(config.coarse_correspondence);
   stages.push_back(config.max_correspondence);
   std::vector<Eigen::Vector3f> coarse_query;
-  const size_t stride = (query.size() + kCoarsePoints - 1) / kCoarsePoints;
-  for (size_t i = 0; i < query.size(); i += stride) coarse_query.push_back(query[i]);
+  if (stages.size() > 1 && query.size() > kCoarsePoints) {
+    const size_t stride = (query.size() + kCoarsePoints - 1) / kCoarsePoints;
+    for (size_t i = 0; i < query.size(); i += stride) coarse_query.push_back(query[i]);
+  }
   for (size_t stage = 0; stage < stages.size(); ++stage) {
     const double distance = stages[stage];
-    const std::vector<Eigen::Vector3f>& points = stage + 1 < stages.size() ? coarse_query : query;
+    const bool coarse = stage + 1 < stages.size();
+    // The coarse stage's subsample, until it pairs too few points or leaves a direction free: then the whole query,
+    // so that the subsample never fails a refinement the whole query would carry on.
+    const std::vector<Eigen::Vector3f>* points = coarse && !coarse_query.empty() ? &coarse_query : &query;
     // The coarse stage only has to bring the pose into the fine stage's reach: it stops at millimetre steps.
     const double tolerance = stage + 1 < stages.size() ? std::max(config.convergence, kCoarseConvergence)
                                                         : config.convergence;
     converged = false;
     for (int it = 0; it < config.max_iterations && !converged; ++it) {
-      const Linearisation lin = linearise(points, rows, normal, tree, T, distance, config.kernel);
+      Linearisation lin = linearise(*points, rows, normal, tree, T, distance, config.kernel);
+      if (points != &query && (lin.pairs < kMinPairs || degenerate(lin.H))) {
+        points = &query;
+        lin = linearise(query, rows, normal, tree, T, distance, config.kernel);
+      }
       if (lin.pairs < kMinPairs) return finish(RefinementStatus::kTooFewPoints);
       if (degenerate(lin.H)) return finish(RefinementStatus::kDegenerate);
       const Vector6d delta = -lin.H.ldlt().solve(lin.g);
