@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -129,6 +130,13 @@ bool degenerate(const Matrix6d& H) {
   return !(eig.eigenvalues()(0) > 1e-6 * eig.eigenvalues()(5));
 }
 
+/// Why a linearisation cannot take a step: too few pairs, or a direction left free; nothing if it can.
+std::optional<RefinementStatus> failure(const Linearisation& lin) {
+  if (lin.pairs < kMinPairs) return RefinementStatus::kTooFewPoints;
+  if (degenerate(lin.H)) return RefinementStatus::kDegenerate;
+  return std::nullopt;
+}
+
 }  // namespace
 
 const char* refinementStatusName(RefinementStatus s) {
@@ -189,17 +197,17 @@ Refinement refinePose(const std::vector<Eigen::Vector3f>& query, const std::vect
     // so that the subsample never fails a refinement the whole query would carry on.
     const std::vector<Eigen::Vector3f>* points = coarse && !coarse_query.empty() ? &coarse_query : &query;
     // The coarse stage only has to bring the pose into the fine stage's reach: it stops at millimetre steps.
-    const double tolerance = stage + 1 < stages.size() ? std::max(config.convergence, kCoarseConvergence)
-                                                        : config.convergence;
+    const double tolerance = coarse ? std::max(config.convergence, kCoarseConvergence) : config.convergence;
     converged = false;
     for (int it = 0; it < config.max_iterations && !converged; ++it) {
       Linearisation lin = linearise(*points, rows, normal, tree, T, distance, config.kernel);
-      if (points != &query && (lin.pairs < kMinPairs || degenerate(lin.H))) {
+      std::optional<RefinementStatus> failed = failure(lin);
+      if (failed && points != &query) {
         points = &query;
         lin = linearise(query, rows, normal, tree, T, distance, config.kernel);
+        failed = failure(lin);
       }
-      if (lin.pairs < kMinPairs) return finish(RefinementStatus::kTooFewPoints);
-      if (degenerate(lin.H)) return finish(RefinementStatus::kDegenerate);
+      if (failed) return finish(*failed);
       const Vector6d delta = -lin.H.ldlt().solve(lin.g);
       Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
       const double angle = delta.tail<3>().norm();
