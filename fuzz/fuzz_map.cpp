@@ -53,6 +53,12 @@ void readOne(const fuzz::ScratchFile& file, const std::string& bytes) {
   fuzz::require(map::encodeMap(back) == again, "the canonical form is stable");
   fuzz::require(back.names == m.names && back.config == m.config, "names and configuration survive");
   fuzz::require(back.poses.size() == m.poses.size(), "poses survive");
+  fuzz::require(back.sessions.size() == m.sessions.size(), "sessions survive");
+  for (size_t s = 0; s < m.sessions.size(); ++s) {
+    fuzz::require(back.sessions[s].name == m.sessions[s].name && back.sessions[s].first == m.sessions[s].first &&
+                      back.sessions[s].frames == m.sessions[s].frames,
+                  "sessions are exact");
+  }
   for (size_t f = 0; f < m.poses.size(); ++f) fuzz::require(back.poses[f] == m.poses[f], "poses are exact");
   for (int f = 0; f < m.size(); ++f) {
     const auto& a = m.database.nodes(f);

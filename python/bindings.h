@@ -24,6 +24,7 @@ void bindBackend(py::module_& m);        // backend.cpp: the pose-graph optimise
 void bindAccumulate(py::module_& m);     // accumulate.cpp: ScanAccumulator (scan accumulation)
 void bindMap(py::module_& m);            // map.cpp: Map, load_map, Relocalizer
 void bindPipeline(py::module_& m);       // pipeline.cpp: LoopClosingPipeline and what it returns
+void bindSessions(py::module_& m);       // sessions.cpp: SessionPipeline, a new session merged into a map
 
 /// A copy of @p m (the C++ Map is move-only; Python objects share theirs).
 map::Map copyMap(const map::Map& m);

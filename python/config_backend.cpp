@@ -21,6 +21,8 @@ void bindBackendConfig(py::module_& m) {
       .def(py::init<>());
   settingsClass<SolverSettings>(m, "SolverSettings", "Ceres solver settings (backend.solver.*).").def(py::init<>());
   settingsClass<OnlineSettings>(m, "OnlineSettings", "Online re-optimisation (backend.online.*).").def(py::init<>());
+  settingsClass<SessionSettings>(m, "SessionSettings", "A new session joining a map (backend.sessions.*).")
+      .def(py::init<>());
 
   settingsClass<BackendConfig>(m, "BackendConfig", "Pose-graph back end settings (backend.*).")
       .def(py::init<>())
@@ -29,6 +31,7 @@ void bindBackendConfig(py::module_& m) {
       .def_readwrite("consistency", &BackendConfig::consistency, "pairwise loop consistency (backend.consistency.*)")
       .def_readwrite("solver", &BackendConfig::solver, "solver settings (backend.solver.*)")
       .def_readwrite("online", &BackendConfig::online, "online re-optimisation (backend.online.*)")
+      .def_readwrite("sessions", &BackendConfig::sessions, "a new session joining a map (backend.sessions.*)")
       .def("validate", &BackendConfig::validate,
            "Raises ConfigError naming the key of a value out of range, as Config.validate() does.");
 }

@@ -19,6 +19,7 @@ map::Map copyMap(const map::Map& m) {
   copy.names = m.names;
   copy.poses = m.poses;
   copy.footprints = m.footprints;
+  copy.sessions = m.sessions;
   copy.database = m.database.copy();  // with a trained inverted file, so Python searches as the CLI does
   return copy;
 }
@@ -59,6 +60,14 @@ void bindMap(py::module_& m) {
                                return posesToArray(mp.poses);
                              },
                              "(N, 4, 4) float64 T_world_lidar of every frame, or None")
+      .def_property_readonly("sessions",
+                             [](const map::Map& mp) {
+                               std::vector<std::tuple<std::string, int, int>> out;
+                               for (const map::MapSession& s : mp.sessions) out.emplace_back(s.name, s.first, s.frames);
+                               return out;
+                             },
+                             "[(name, first_frame, frames)] the drives merged into the map (docs/sessions.md), or []\n"
+                             "for a map of one drive")
       .def_property_readonly("config", [](const map::Map& mp) { return mp.config; },
                              "[(key, value)] the configuration fields the map depends on, as `sgtllc config` prints")
       .def("nodes", [](const map::Map& mp, int frame) {

@@ -59,6 +59,7 @@ PYBIND11_MODULE(sgtllc, m) {
   sgtllc::python::bindBackend(m);
   sgtllc::python::bindAccumulate(m);
   sgtllc::python::bindPipeline(m);  // after the results, the back end and the map it returns
+  sgtllc::python::bindSessions(m);  // after the pipeline, whose ClosingLoop it returns
   m.def("reuse_freed_memory", &sgtllc::reuseFreedMemory, py::arg("keep_bytes") = std::size_t{32} << 20,
         "Keeps up to keep_bytes of freed memory in the process for the next frame instead of handing it back to\n"
         "the system (glibc only; process-wide, so call it once, at start). Halves label_scan's time on a 120 k-point\n"

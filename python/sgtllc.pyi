@@ -196,6 +196,10 @@ class SolverSettings:
 class OnlineSettings:
     reduced_graph: bool
     anchor_spacing_m: float
+class SessionSettings:
+    min_inter_loops: int
+    keep_distance_m: float
+    keep_heading_deg: float
 class BackendConfig:
     odometry: OdometryNoise
     loops: LoopNoise
@@ -206,6 +210,7 @@ class BackendConfig:
     consistency: LoopConsistency
     solver: SolverSettings
     online: OnlineSettings
+    sessions: SessionSettings
     def validate(self) -> None: ...
 class Config:
     labels: LabelConfig
@@ -351,6 +356,7 @@ class Map:
     has_poses: bool
     has_footprints: bool
     poses: Optional[np.ndarray]
+    sessions: list[Tuple[str, int, int]]
     config: list[Tuple[str, str]]
     def nodes(self, frame: int) -> Nodes: ...
     def save(self, path: str, force: bool = False) -> None: ...
@@ -611,3 +617,29 @@ class LoopClosingPipeline:
                   name: str = "") -> PipelineFrame: ...
     def finish(self) -> Closing: ...
     def to_map(self, poses: Optional[ArrayLike] = None) -> Map: ...
+class SessionMerge:
+    result: BackendResult
+    placed: bool
+    inter_loops: int
+    inter_accepted: int
+    T_world_odometry: np.ndarray
+class SessionClosing:
+    merge: SessionMerge
+    ms: float
+class SessionFrame:
+    index: int
+    detection: FrameResult
+    loop: Optional[ClosingLoop]
+    in_map: Relocalization
+    inter: Optional[ClosingLoop]
+class SessionPipeline:
+    poses: np.ndarray
+    loops: list[ClosingLoop]
+    map_frames: int
+    num_frames: int
+    def __init__(self, map: Map, config: Config = ..., name: str = "session", map_session: str = "map") -> None: ...
+    def add_scan(self, points: ArrayLike, labels: Optional[ArrayLike] = None, *, pose: ArrayLike, name: str = "",
+                 drop_nonfinite: bool = False) -> SessionFrame: ...
+    def add_nodes(self, centres: ArrayLike, classes: ArrayLike, pose: ArrayLike, name: str = "") -> SessionFrame: ...
+    def finish(self) -> SessionClosing: ...
+    def merged_map(self) -> Map: ...

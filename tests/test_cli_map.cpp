@@ -20,13 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 class CliMap : public test::CliTempDirTest {
  protected:
   CliMap() : CliTempDirTest("map") {}
@@ -77,8 +70,8 @@ TEST_F(CliMap, SavesAMapAndLocalizesASecondSessionInIt) {
   EXPECT_NE(one.out.find("frames 20, localized "), std::string::npos) << one.out;
   const auto three = test::run(args + " --out " + path("hits3.csv") + " --threads 3");
   ASSERT_EQ(three.status, 0) << three.out;
-  const std::string csv = slurp(path("hits1.csv"));
-  EXPECT_EQ(csv, slurp(path("hits3.csv")));
+  const std::string csv = test::fileBytes(path("hits1.csv"));
+  EXPECT_EQ(csv, test::fileBytes(path("hits3.csv")));
 
   // Every localized row's map position is the second session's true position.
   std::istringstream rows(csv);
@@ -164,7 +157,7 @@ TEST_F(CliMap, EvalWithAMapScoresTheRelocalizationProtocol) {
   ASSERT_EQ(track_json.status, 0) << track_json.out;
   const nlohmann::json track_hits = nlohmann::json::parse(track_json.out)["hits"];
   ASSERT_EQ(test::run(track_args + " --out " + path("tracked.csv")).status, 0);
-  std::istringstream rows(slurp(path("tracked.csv")));
+  std::istringstream rows(test::fileBytes(path("tracked.csv")));
   std::string line;
   std::getline(rows, line);
   size_t q = 0;
@@ -196,22 +189,22 @@ TEST_F(CliMap, SavingAMapChangesNoOtherOutput) {
   const std::string base = s1();
   ASSERT_EQ(test::run(base + " --out " + path("plain.csv")).status, 0);
   ASSERT_EQ(test::run(base + " --out " + path("with.csv") + " --save-map " + path("m.sgtmap")).status, 0);
-  EXPECT_EQ(slurp(path("plain.csv")), slurp(path("with.csv")));
+  EXPECT_EQ(test::fileBytes(path("plain.csv")), test::fileBytes(path("with.csv")));
   // The same run saves the same bytes.
   ASSERT_EQ(test::run(base + " --save-map " + path("again.sgtmap")).status, 0);
-  EXPECT_EQ(slurp(path("m.sgtmap")), slurp(path("again.sgtmap")));
+  EXPECT_EQ(test::fileBytes(path("m.sgtmap")), test::fileBytes(path("again.sgtmap")));
 }
 
 TEST_F(CliMap, RefusesBadMapsWithAMessageNamingTheFile) {
   saveMap();
-  const std::string bytes = slurp(path("m.sgtmap"));
+  const std::string bytes = test::fileBytes(path("m.sgtmap"));
   const std::string query = " --nodes " + path("s2/nodes") + " --config " + path("config.yaml");
 
   // An existing map is kept without --force.
   const auto again = test::run(s1() + " --save-map " + path("m.sgtmap"));
   EXPECT_EQ(again.status, 1);
   EXPECT_NE(again.out.find(path("m.sgtmap") + ": file exists"), std::string::npos) << again.out;
-  EXPECT_EQ(slurp(path("m.sgtmap")), bytes);
+  EXPECT_EQ(test::fileBytes(path("m.sgtmap")), bytes);
 
   std::ofstream(path("bins.yaml")) << "retrieval:\n  exclude_recent: 20\n  histogram_bins: 12\n";
   const auto other = test::run("localize --map " + path("m.sgtmap") + " --nodes " + path("s2/nodes") + " --config " +

@@ -33,12 +33,17 @@ void mapInfo(const std::string& path, bool json) {
     }
     Json config = Json::object();
     for (const auto& [key, value] : m.config) config[key] = value;
+    Json sessions = Json::array();
+    for (const map::MapSession& s : m.sessions) {
+      sessions.push_back({{"name", s.name}, {"first_frame", s.first}, {"frames", s.frames}});
+    }
     std::cout << jsonText({{"map", path},
                            {"format_version", layout.format_version},
                            {"bytes", layout.file_bytes},
                            {"frames", m.size()},
                            {"poses", m.hasPoses()},
                            {"footprints", footprints},
+                           {"sessions", sessions},
                            {"nodes", nodes},
                            {"key_length", m.size() ? m.database.globalDimension() : 0},
                            {"bytes_per_frame", per_frame},
@@ -61,6 +66,15 @@ void mapInfo(const std::string& path, bool json) {
     // Relocalization checks a candidate's structure only where its frame kept a footprint (algorithm §7.7).
     std::cout << "\nfootprints " << footprints << " of " << m.size() << " frames";
   }
+  if (!m.sessions.empty()) {
+    // Merged drives (docs/sessions.md), in frame order.
+    std::cout << "\nsessions " << m.sessions.size() << ":";
+    for (const map::MapSession& s : m.sessions) {
+      std::cout << "\n  " << escapeContent(s.name, io::kNameBytes) << ": " << s.frames << " frames ("
+                << escapeContent(m.names.at(static_cast<size_t>(s.first)), io::kNameBytes) << " .. "
+                << escapeContent(m.names.at(static_cast<size_t>(s.first + s.frames - 1)), io::kNameBytes) << ")";
+    }
+  }
   std::cout << "\nconfiguration fingerprint " << hex(layout.fingerprint) << "\nsections:\n";
   for (const map::SectionInfo& s : layout.sections) {
     std::cout << "  " << escapeContent(s.tag) << " v" << s.version << "  " << s.bytes << " bytes"
@@ -79,7 +93,7 @@ void addMapCommand(CLI::App& app) {
   cmd->require_subcommand(1);
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
-  CLI::App* info = cmd->add_subcommand("info", "Print what a map holds: version, frames, poses, configuration, sections");
+  CLI::App* info = cmd->add_subcommand("info", "Print what a map holds: version, frames, poses, sessions, configuration, sections");
   info->add_option("MAP", *path, "map file")->required();
   info->add_flag("--json", *json, "print it as one JSON object");
   info->callback([path, json] { mapInfo(*path, *json); });

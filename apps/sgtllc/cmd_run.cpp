@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "common.h"
 #include "loop_closing.h"
+#include "run_session.h"
 #include "sgtllc/pipeline/frame_source.h"
 #include "sgtllc/pipeline/loop_closing_pipeline.h"
 #include "sgtllc/eval/ground_truth.h"
@@ -20,24 +21,6 @@
 namespace sgtllc::cli {
 namespace {
 
-struct RunOptions {
-  std::string sequence;
-  std::string nodes;
-  std::string out;
-  std::string config;
-  std::string labeller;    ///< --labeller file|geometric
-  std::string labels_dir;  ///< --labels-dir: NAME.label files instead of SEQ_DIR/labels
-  std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
-  io::PoseFrame pose_frame = io::PoseFrame::kAuto;  ///< --pose-frame of a KITTI --odometry (or poses.txt)
-  std::string save_map;         ///< --save-map: the database, names and poses as a map file
-  ClosingOutputs outputs;
-  int threads = 0;
-  int accumulate = 1;  ///< --accumulate: scans merged into each frame
-  bool json = false;
-  bool quiet = false;  ///< --quiet: the summary only, no line per loop
-  bool force = false;
-  bool online = false;  ///< re-optimise at every loop instead of once at the end
-};
 
 using Loop = io::LoopRecord;
 
@@ -214,6 +197,14 @@ void addRunCommand(CLI::App& app) {
                   "save the database as a map file for `sgtllc localize` (frames named as the input; poses: the "
                   "corrected --odometry trajectory, else SEQ_DIR/poses.txt with calib.txt when present)");
   addClosingOutputOptions(*cmd, o->outputs);
+  cmd->add_option("--map", o->map,
+                  "run SEQ_DIR as a new session against this map (needs --odometry): its frames are searched in the map "
+                  "and among its own, and one pose graph places it in the map's frame with the map's poses fixed; "
+                  "--out-trajectory is then in the map's frame and --save-map writes the merged map (docs/sessions.md)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--session-name", o->session_name,
+                  "with --map: the session's name in the merged map, its frames named NAME/FRAME (default: the "
+                  "folder's name)");
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
@@ -239,6 +230,15 @@ void addRunCommand(CLI::App& app) {
     if (o->accumulate > 1 && !o->nodes.empty()) {
       throw CLI::ValidationError("run", "--accumulate merges scans: give SEQ_DIR, not --nodes");
     }
+    if (!o->map.empty()) {
+      if (o->odometry.empty()) throw CLI::ValidationError("run", "--map needs the session's --odometry");
+      if (o->online || !o->outputs.graph.empty() || !o->outputs.loops.empty()) {
+        throw CLI::ValidationError("run", "--online, --out-graph and --out-loops do not work with --map yet");
+      }
+      runSession(*o);
+      return;
+    }
+    if (!o->session_name.empty()) throw CLI::ValidationError("run", "--session-name names a session run with --map");
     runSequence(*o);
   });
 }

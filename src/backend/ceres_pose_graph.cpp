@@ -43,7 +43,7 @@ Eigen::Matrix<double, 6, 1> edgeError(const Edge& edge, const Eigen::Isometry3d&
 }
 
 SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& loops,
-                   std::vector<Eigen::Isometry3d>& poses, const BackendConfig& config) {
+                   std::vector<Eigen::Isometry3d>& poses, const BackendConfig& config, int fixed) {
   std::vector<PoseBlock> blocks(poses.size());
   for (size_t i = 0; i < poses.size(); ++i) blocks[i] = toBlock(poses[i]);
 
@@ -59,7 +59,9 @@ SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& l
   for (auto& b : blocks) {
     if (problem.HasParameterBlock(b.data())) problem.SetManifold(b.data(), &manifold);
   }
-  if (!blocks.empty() && problem.HasParameterBlock(blocks[0].data())) problem.SetParameterBlockConstant(blocks[0].data());
+  for (size_t i = 0; i < blocks.size() && i < static_cast<size_t>(fixed); ++i) {
+    if (problem.HasParameterBlock(blocks[i].data())) problem.SetParameterBlockConstant(blocks[i].data());
+  }
 
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;

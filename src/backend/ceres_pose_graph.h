@@ -33,9 +33,10 @@ struct EdgeJacobians {
 EdgeJacobians edgeJacobians(const Edge& edge, const Eigen::Isometry3d& T_world_from, const Eigen::Isometry3d& T_world_to,
                             bool automatic);
 
-/// Minimises Σ odometry eᵀΩe + Σ loops ρ(eᵀΩe) over @p poses (in place; frame 0 held fixed as the gauge).
-/// @p loops are the edges (of any kind) that get the robust loss.
+/// Minimises Σ odometry eᵀΩe + Σ loops ρ(eᵀΩe) over @p poses (in place; the first @p fixed poses held as they are:
+/// frame 0 as the gauge, or a prior map's frames, docs/sessions.md). @p loops are the edges (of any kind) that get
+/// the robust loss.
 SolveSummary solve(const std::vector<Edge>& odometry, const std::vector<Edge>& loops,
-                   std::vector<Eigen::Isometry3d>& poses, const BackendConfig& config);
+                   std::vector<Eigen::Isometry3d>& poses, const BackendConfig& config, int fixed = 1);
 
 }  // namespace sgtllc::backend::internal

@@ -22,13 +22,17 @@ bool consistent(const CycleError& e, const LoopConsistency& b) {
 }
 
 int ConsistencyGraph::add(const Edge& loop, const OdometryChain& odometry, const LoopConsistency& bounds) {
+  return add(loop, [&](const Edge& earlier) { return consistent(cycleError(earlier, loop, odometry), bounds); });
+}
+
+int ConsistencyGraph::add(const Edge& loop, const std::function<bool(const Edge& earlier)>& consistent_with) {
   const int n = size();
   const size_t words = static_cast<size_t>(n) / 64 + 1;
   for (auto& row : rows_) row.resize(words, 0u);
   rows_.emplace_back(words, 0u);
   degree_.push_back(0);
   for (int i = 0; i < n; ++i) {
-    if (!consistent(cycleError(loops_[i], loop, odometry), bounds)) continue;
+    if (!consistent_with(loops_[i])) continue;
     rows_[i][n / 64] |= uint64_t{1} << (n % 64);
     rows_[n][i / 64] |= uint64_t{1} << (i % 64);
     ++degree_[i];

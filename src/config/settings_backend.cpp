@@ -58,6 +58,15 @@ void addBackendSettings(std::vector<Setting>* out) {
          "online re-optimisation over loop-endpoint anchors only (false: the full graph every loop)");
   n.number("anchor_spacing_m", &OnlineSettings::anchor_spacing_m, "[0, 1000]", "m",
            "path stretch whose loop endpoints share one online anchor; 0: each its own");
+
+  SectionTable<SessionSettings> e("backend.sessions",
+                                  [](Config& config) -> SessionSettings& { return config.backend.sessions; }, out);
+  e.number("min_inter_loops", &SessionSettings::min_inter_loops, "[1, 1000]", "",
+           "agreeing inter-session loops a session needs to join a map (run --map)");
+  e.number("keep_distance_m", &SessionSettings::keep_distance_m, "[0, 1000]", "m",
+           "a recognised session frame with a map frame this near (and keep_heading_deg) is not added; 0: all are");
+  e.number("keep_heading_deg", &SessionSettings::keep_heading_deg, "[0, 180]", "deg",
+           "... whose forward axis is within this of its own");
 }
 
 }  // namespace sgtllc::detail

@@ -112,6 +112,22 @@ void checkFrames(const Map& map, const std::string& source) {
               "or bits do not agree)");
     }
   }
+  std::unordered_set<std::string_view> session_names;
+  size_t next = 0;
+  for (const MapSession& s : map.sessions) {
+    if (s.name.empty() || s.name.find('/') != std::string::npos || !session_names.insert(s.name).second) {
+      invalid("session name '" + s.name + "' is empty, holds a '/' or is used twice");
+    }
+    if (s.first < 0 || static_cast<size_t>(s.first) != next || s.frames < 0 ||
+        static_cast<size_t>(s.frames) > n - next) {
+      invalid("session '" + s.name + "' (frames " + std::to_string(s.first) + " + " + std::to_string(s.frames) +
+              ") does not follow the session before it within the " + std::to_string(n) + " frames");
+    }
+    next += static_cast<size_t>(s.frames);
+  }
+  if (!map.sessions.empty() && next != n) {
+    invalid("the sessions hold " + std::to_string(next) + " of the " + std::to_string(n) + " frames");
+  }
   std::unordered_set<std::string_view> seen;
   for (const std::string& name : map.names) {
     if (name.empty()) invalid("a frame has an empty name");

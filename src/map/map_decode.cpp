@@ -134,6 +134,7 @@ Map decodeMapFrom(ByteSource& src, const std::string& source, RetrievalMethod me
   map.config = std::move(*parts.config);
   map.names = std::move(*parts.names);
   if (parts.poses) map.poses = std::move(*parts.poses);
+  if (parts.sessions) map.sessions = std::move(*parts.sessions);
   if (parts.sights && !parts.footprints) fail(MapProblem::kCorrupted, "corrupted map: sights (SGHT) without footprints");
   if (parts.footprints) map.footprints = std::move(*parts.footprints);
   if (parts.sights) {

@@ -100,7 +100,17 @@ EncodedMap encodeMapPieces(const Map& map, const std::string& source) {
       }
     }
   }
-  const bool has_footprints = !footprints.empty(), has_sights = !sights.empty();
+  // The sessions too: a reader that predates them skips the section and sees one drive.
+  std::string sessions;
+  if (!map.sessions.empty()) {
+    put<uint64_t>(sessions, map.sessions.size());
+    for (const MapSession& s : map.sessions) {
+      putText(sessions, s.name);
+      put<uint64_t>(sessions, static_cast<uint64_t>(s.first));
+      put<uint64_t>(sessions, static_cast<uint64_t>(s.frames));
+    }
+  }
+  const bool has_footprints = !footprints.empty(), has_sights = !sights.empty(), has_sessions = !sessions.empty();
   EncodedMap out;
   putSection(out, "CONF", std::move(conf));
   putSection(out, "FRMS", std::move(names));
@@ -110,10 +120,12 @@ EncodedMap encodeMapPieces(const Map& map, const std::string& source) {
   if (state) putSection(out, "IVFS", encodeIvf(*state, dim));
   if (has_footprints) putSection(out, "FTPR", std::move(footprints));
   if (has_sights) putSection(out, "SGHT", std::move(sights));
+  if (has_sessions) putSection(out, "SESS", std::move(sessions));
 
   std::string header(kMagic);
   put<uint32_t>(header, kFormatVersion);
-  put<uint32_t>(header, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (has_footprints ? 1 : 0) + (has_sights ? 1 : 0));
+  put<uint32_t>(header, 4 + (map.hasPoses() ? 1 : 0) + (state ? 1 : 0) + (has_footprints ? 1 : 0) + (has_sights ? 1 : 0) +
+                                (has_sessions ? 1 : 0));
   put<uint64_t>(header, kHeaderBytes + out.size());
   put<uint64_t>(header, fingerprint(map.config));
   put<uint32_t>(header, 0);  // flags: none so far

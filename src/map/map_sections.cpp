@@ -1,6 +1,7 @@
 #include "map_sections.h"
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "ivf_section.h"
@@ -118,9 +119,26 @@ void readSights(Reader& r, Parts& parts) {
   parts.sights = std::move(frames);
 }
 
+void readSessions(Reader& r, Parts& parts) {
+  // Each session takes at least its name's length and two counts (20 bytes); checkFrames() tests the tiling.
+  const size_t n = r.count(sizeof(uint32_t) + 2 * sizeof(uint64_t));
+  std::vector<MapSession> sessions;  // grown as sessions parse, as the names
+  for (size_t s = 0; s < n; ++s) {
+    MapSession session;
+    session.name = r.text();
+    const uint64_t first = r.get<uint64_t>(), frames = r.get<uint64_t>();
+    if (first > INT32_MAX || frames > INT32_MAX) r.fail("a session's frames are out of range");
+    session.first = static_cast<int>(first);
+    session.frames = static_cast<int>(frames);
+    sessions.push_back(std::move(session));
+  }
+  parts.sessions = std::move(sessions);
+}
+
 constexpr SectionKind kSections[] = {
     {"CONF", readConfig}, {"FRMS", readNames}, {"POSE", readPoses}, {"NODE", readNodes}, {"KEYS", readKeys},
-    {"IVFS", readIvf}, {"FTPR", readFootprints}, {"SGHT", readSights}};
+    {"IVFS", readIvf}, {"FTPR", readFootprints}, {"SGHT", readSights},
+    {"SESS", readSessions}};
 
 }  // namespace
 

@@ -26,6 +26,7 @@ struct Parts {
   std::optional<IvfState> ivf;                                   // a trained inverted file (retrieval.method ivf)
   std::optional<std::vector<Footprint>> footprints;              // one per frame (empty ones where none)
   std::optional<std::vector<Sight>> sights;                      // one per frame (empty ones where none)
+  std::optional<std::vector<MapSession>> sessions;               // the drives merged into the map
 };
 
 struct SectionKind {

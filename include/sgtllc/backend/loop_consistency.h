@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "sgtllc/config/backend_config.h"
@@ -30,6 +31,8 @@ class ConsistencyGraph {
  public:
   /// Adds a loop (checked against all loops added before) and returns its index.
   int add(const Edge& loop, const OdometryChain& odometry, const LoopConsistency& bounds);
+  /// Adds a loop, consistent with each earlier loop for which @p consistent_with says so; returns its index.
+  int add(const Edge& loop, const std::function<bool(const Edge& earlier)>& consistent_with);
   int size() const { return static_cast<int>(loops_.size()); }
   bool adjacent(int i, int j) const { return (rows_[i][j / 64] >> (j % 64)) & 1u; }
   int degree(int i) const { return degree_[i]; }

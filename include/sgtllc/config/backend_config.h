@@ -73,6 +73,20 @@ struct OnlineSettings {
   double anchor_spacing_m = 5.0;
 };
 
+/// How a new session joins a saved map (docs/sessions.md).
+struct SessionSettings {
+  /// Inter-session loops that must agree (the largest pairwise-consistent set) before a session is tied to the map;
+  /// with fewer it stays in its own odometry frame and is not merged. Two, so that one wrong loop alone never places
+  /// a session.
+  int min_inter_loops = 2;
+  /// A session frame joins the merged map unless the map recognised it (its inter-session loop was accepted) and a
+  /// map frame lies within this distance (m) and keep_heading_deg of its pose: the map then grows with the streets
+  /// covered, not with the drives (docs/sessions.md, "Thinning"). 0: every frame joins.
+  double keep_distance_m = 3.0;
+  /// ... and heading: a map frame facing more than this away (deg) does not cover the session frame.
+  double keep_heading_deg = 45.0;
+};
+
 struct BackendConfig {
   OdometryNoise odometry;
   LoopNoise loops;
@@ -85,6 +99,7 @@ struct BackendConfig {
   int max_rejection_rounds = 10;  ///< residual-check rounds (each re-optimises); the rest stays as it is
   SolverSettings solver;
   OnlineSettings online;
+  SessionSettings sessions;
 
   /// Throws sgtllc::Error naming the offending key (`backend.…`) if a value is out of range.
   void validate() const;

@@ -21,6 +21,14 @@ namespace sgtllc::map {
 /// Configuration fields as (YAML key, printed value) pairs, in print order.
 using ConfigFields = std::vector<std::pair<std::string, std::string>>;
 
+/// One drive a map holds (docs/sessions.md): frames first … first + frames − 1 (none when every frame of a drive
+/// was already covered by the map).
+struct MapSession {
+  std::string name;  ///< non-empty, unique in the map, without '/'
+  int first = 0;
+  int frames = 0;
+};
+
 /// A map: what a LoopDetector stored for each frame (nodes and retrieval key, in FrameDatabase), the frame names,
 /// optional poses, and the configuration fields those depend on.
 struct Map {
@@ -32,6 +40,9 @@ struct Map {
   /// The frames' footprints (algorithm §7.7; not dilated), one per frame (an empty one where a frame had none:
   /// node input), or none at all: a relocalization then runs without the footprint check and the consistency path.
   std::vector<Footprint> footprints;
+  /// The drives merged into the map (SessionPipeline), in frame order, together covering every frame once; or
+  /// none: one drive, unnamed (a map saved by `run --save-map`).
+  std::vector<MapSession> sessions;
 
   int size() const { return database.size(); }
   bool hasPoses() const { return !poses.empty(); }
@@ -92,7 +103,8 @@ Map makeMap(const FrameDatabase& database, const Config& config, std::vector<std
             std::vector<Eigen::Matrix4d> poses = {}, std::vector<Footprint> footprints = {});
 
 /// Throws MapError(kInvalid) naming @p source unless names and poses fit the database (counts; names non-empty and
-/// unique; poses finite rigid motions: |RᵀR − I| and |det R − 1| at most 1e-3, the trajectory readers' bound).
+/// unique; poses finite rigid motions: |RᵀR − I| and |det R − 1| at most 1e-3, the trajectory readers' bound) and
+/// the sessions, if any, cover the frames in order, each with a unique name without '/'.
 void checkFrames(const Map& map, const std::string& source);
 
 }  // namespace sgtllc::map

@@ -1,0 +1,140 @@
+// `sgtllc run SEQ --odometry O --map A.sgtmap`: a new session against a saved map (docs/sessions.md).
+#include <filesystem>
+#include <iostream>
+
+#include "accumulation.h"
+#include "run_session.h"
+#include "sgtllc/eval/sequence_eval.h"
+#include "sgtllc/io/loops_csv.h"
+#include "sgtllc/io/output_file.h"
+#include "sgtllc/io/quote.h"
+#include "sgtllc/map/map_file.h"
+#include "sgtllc/pipeline/session_pipeline.h"
+
+namespace sgtllc::cli {
+namespace {
+
+/// The default name of a session: its folder's name ("u7s8" for /data/u7s8/), of a map: its file's stem.
+std::string defaultName(const std::string& path, bool stem) {
+  std::filesystem::path p(path);
+  if (!stem && !p.has_filename()) p = p.parent_path();
+  std::string name = stem ? p.stem().string() : p.filename().string();
+  for (char& c : name) {
+    if (c == '/') c = '_';
+  }
+  return name.empty() ? "session" : name;
+}
+
+}  // namespace
+
+void runSession(const RunOptions& o) {
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
+  if (!o.out.empty()) checkWritable(o.out, o.force);
+  if (!o.outputs.trajectory.empty()) checkWritable(o.outputs.trajectory, o.force);
+  if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
+  pipeline::SessionOptions options;
+  options.name = o.session_name.empty() ? defaultName(o.nodes.empty() ? o.sequence : o.nodes, false) : o.session_name;
+  options.map_session = defaultName(o.map, true);
+  pipeline::SessionPipeline session(map::readMapFile(o.map, config), config, options, o.map);
+  pipeline::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
+  const Odometry odometry = readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size());
+  applyAccumulation(source, o.accumulate, &odometry, o.sequence, o.calib, o.pose_frame);
+
+  std::vector<double> frame_ms;
+  Progress progress("frames", source.size());
+  pipeline::streamFrames(source, config.threads, [&](size_t index, pipeline::LoadedFrame& loaded) {
+    const pipeline::SessionFrame f = session.addFrame(std::move(loaded), odometry.poses[index], source.name(index));
+    frame_ms.push_back(f.own.detection.timing.total_ms() + f.in_map.search.timing.total_ms());
+    if (!o.json && !o.quiet) {
+      for (const std::optional<pipeline::ClosingLoop>* l : {&f.own.loop, &f.inter}) {
+        if (!l->has_value()) continue;
+        progress.clear();
+        std::cout << ((*l)->edge.from < session.mapFrames() ? "inter-session loop " : "loop ")
+                  << io::escapeContent((*l)->query, io::kNameBytes) << " -> "
+                  << io::escapeContent((*l)->match, io::kNameBytes) << "  score " << fixed((*l)->score, 3) << "\n";
+      }
+    }
+    progress.update(index + 1, std::to_string(session.loops().size()) + " loops");
+  });
+  progress.finish();
+  const pipeline::SessionClosing& closing = session.finish();
+  const backend::SessionMerge& merge = closing.merge;
+
+  if (!o.out.empty()) {
+    std::vector<io::LoopRecord> records;
+    for (const pipeline::ClosingLoop& l : session.loops()) records.push_back(pipeline::loopRecord(l));
+    writeOutput(o.out, io::loopsCsvText(records, true), o.force);
+  }
+  const bool wants_placement = !o.outputs.trajectory.empty() || !o.save_map.empty();
+  if (!merge.placed && wants_placement) {
+    throw Error((o.sequence.empty() ? o.nodes : o.sequence) + ": not placed in " + o.map + ": " +
+                std::to_string(merge.inter_accepted) + " of " + std::to_string(merge.inter_loops) +
+                " inter-session loops agree, " + std::to_string(config.backend.sessions.min_inter_loops) +
+                " are needed; --out-trajectory and --save-map were not written");
+  }
+  if (!o.outputs.trajectory.empty()) {
+    io::writeTrajectory(o.outputs.trajectory, io::withPoses(odometry.trajectory, merge.result.poses),
+                        io::overwriteIf(o.force));
+  }
+  if (!o.save_map.empty()) map::writeMapFile(o.save_map, session.mergedMap(), io::overwriteIf(o.force));
+
+  int added = 0;
+  for (bool k : session.framesKept()) added += k;
+  int intra = 0, intra_accepted = 0;
+  for (size_t k = 0; k < session.loops().size(); ++k) {
+    if (session.loops()[k].edge.from < session.mapFrames()) continue;
+    ++intra;
+    intra_accepted += merge.result.loops[k].decision == backend::LoopDecision::kAccepted;
+  }
+  const int frames = session.session().numFrames();
+  if (o.json) {
+    Json out = {{"sequence", o.nodes.empty() ? o.sequence : o.nodes},
+                {"map", o.map},
+                {"session", options.name},
+                {"frames", frames},
+                {"map_frames", session.mapFrames()},
+                {"placed", merge.placed},
+                {"inter_session_loops", merge.inter_loops},
+                {"inter_session_accepted", merge.inter_accepted},
+                {"intra_session_loops", intra},
+                {"intra_session_accepted", intra_accepted},
+                {"ms_per_frame_median", eval::percentile(frame_ms, 0.5)},
+                {"ms_per_frame_p99", eval::percentile(frame_ms, 0.99)},
+                {"merge_ms", closing.ms}};
+    out["frames_added_to_map"] = merge.placed ? added : 0;
+    if (!o.save_map.empty()) out["merged_map"] = o.save_map;
+    Json list = Json::array();
+    for (size_t k = 0; k < session.loops().size(); ++k) {
+      const pipeline::ClosingLoop& l = session.loops()[k];
+      list.push_back({{"query", l.query},
+                      {"match", l.match},
+                      {"inter_session", l.edge.from < session.mapFrames()},
+                      {"score", l.score},
+                      {"decision", backend::loopDecisionName(merge.result.loops[k].decision)},
+                      {"chi2", merge.result.loops[k].chi2}});
+    }
+    out["loop_list"] = list;
+    std::cout << jsonText(out) << "\n";
+    return;
+  }
+  std::cout << "frames " << frames << " against a map of " << session.mapFrames() << "; inter-session loops "
+            << merge.inter_loops << ", accepted " << merge.inter_accepted << "; intra-session loops " << intra
+            << ", accepted " << intra_accepted << "; ms per frame (both searches): median "
+            << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
+            << "; merge " << fixed(closing.ms, 1) << " ms\n";
+  const std::string name = io::escapeContent(options.name, io::kNameBytes);
+  std::cout << (merge.placed ? "session '" + name + "' placed in the map's frame\n"
+                             : "session '" + name + "' NOT placed: fewer than " +
+                                   std::to_string(config.backend.sessions.min_inter_loops) +
+                                   " consistent inter-session loops; its poses stay in the odometry's frame\n");
+  for (const std::string* path : {&o.out, &o.outputs.trajectory}) {
+    if (!path->empty()) std::cout << "wrote " << *path << "\n";
+  }
+  if (!o.save_map.empty()) {
+    std::cout << "wrote map " << o.save_map << " (" << session.mapFrames() + added << " frames: the map's "
+              << session.mapFrames() << " and " << added << " of the session's " << frames
+              << "; the others are places the map has and recognised)\n";
+  }
+}
+
+}  // namespace sgtllc::cli

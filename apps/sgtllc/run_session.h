@@ -1,0 +1,37 @@
+// `sgtllc run`'s options, and a run as a new session against a saved map (`run SEQ --odometry O --map A.sgtmap`,
+// docs/sessions.md).
+#pragma once
+
+#include <string>
+
+#include "loop_closing.h"
+#include "sgtllc/io/trajectory_frame.h"
+
+namespace sgtllc::cli {
+
+struct RunOptions {
+  std::string sequence;
+  std::string nodes;
+  std::string out;
+  std::string config;
+  std::string labeller;    ///< --labeller file|geometric
+  std::string labels_dir;  ///< --labels-dir: NAME.label files instead of SEQ_DIR/labels
+  std::string odometry, calib;  ///< --odometry, --calib: close the loop with the back end
+  io::PoseFrame pose_frame = io::PoseFrame::kAuto;  ///< --pose-frame of a KITTI --odometry (or poses.txt)
+  std::string save_map;         ///< --save-map: the database, names and poses as a map file
+  std::string map;              ///< --map: run the sequence as a new session against this map (docs/sessions.md)
+  std::string session_name;     ///< --session-name: its name in the merged map
+  ClosingOutputs outputs;
+  int threads = 0;
+  int accumulate = 1;  ///< --accumulate: scans merged into each frame
+  bool json = false;
+  bool quiet = false;  ///< --quiet: the summary only, no line per loop
+  bool force = false;
+  bool online = false;  ///< re-optimise at every loop instead of once at the end
+};
+
+/// The run with --map: every frame searched in the map and among the session's own frames, then merged into the
+/// map's frame; writes --out-trajectory (the session in the map's frame), --save-map (the merged map) and --out.
+void runSession(const RunOptions& o);
+
+}  // namespace sgtllc::cli

@@ -1,0 +1,119 @@
+// `sgtllc run SEQ --odometry O --map A.sgtmap` (docs/sessions.md): a second session of the synthetic circular world
+// as node files, its odometry in a frame of its own, merged into the first session's map; the refusals.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sgtllc/io/kitti_write.h"
+#include "sgtllc/io/nodes.h"
+#include "sgtllc/io/trajectory.h"
+#include "test_cli_support.h"
+#include "test_map_support.h"
+
+namespace sgtllc {
+namespace {
+
+class CliSessions : public test::CliTempDirTest {
+ protected:
+  CliSessions() : CliTempDirTest("sessions") {}
+  void SetUp() override {
+    CliTempDirTest::SetUp();
+    first_ = test::circleSequence(110);
+    second_ = test::circleSequence(40, 2.0, 0.9, /*seed=*/99);
+    write(first_, path("s1"));
+    write(second_, path("s2"));
+    // Every frame joins the map here (thinning: tests/test_pipeline_sessions.cpp).
+    std::ofstream(path("config.yaml")) << "retrieval:\n  exclude_recent: 20\nbackend:\n  sessions:\n    keep_distance_m: 0\n";
+    const auto r = test::run("run --nodes " + path("s1/nodes") + " --odometry " + path("s1/odometry.txt") + " --calib " +
+                             path("s1/calib.txt") + " --config " + path("config.yaml") + " --save-map " + path("m.sgtmap"));
+    ASSERT_EQ(r.status, 0) << r.out;
+  }
+  /// DIR/nodes/NAME.txt node files, DIR/odometry.txt (exact motion from the identity at the first frame: the
+  /// session's own frame; KITTI cam0 = LiDAR here, calib Tr is the identity) and calib.txt.
+  static void write(const test::NodeSequence& s, const std::string& dir) {
+    std::filesystem::create_directories(dir + "/nodes");
+    std::vector<Eigen::Matrix4d> odometry;
+    for (size_t i = 0; i < s.frames.size(); ++i) {
+      io::writeNodesTxt(dir + "/nodes/" + s.names[i] + ".txt", s.frames[i]);
+      odometry.push_back(s.poses.front().inverse() * s.poses[i]);
+    }
+    io::writeKittiPoses(dir + "/odometry.txt", odometry);
+    std::ofstream(dir + "/calib.txt") << "Tr: 1 0 0 0 0 1 0 0 0 0 1 0\n";
+  }
+  std::string session(const std::string& extra, const std::string& map = "m.sgtmap") const {
+    return "run --nodes " + path("s2/nodes") + " --odometry " + path("s2/odometry.txt") + " --calib " +
+           path("s2/calib.txt") + " --config " + path("config.yaml") + " --map " + path(map) + " " + extra;
+  }
+  test::NodeSequence first_, second_;
+};
+
+TEST_F(CliSessions, MergesASecondSessionIntoTheMapsFrame) {
+  const auto r = test::run(session("--session-name east --out-trajectory " + path("t1.txt") + " --save-map " +
+                                   path("m2.sgtmap") + " --out " + path("loops1.csv") + " --threads 1"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("frames 40 against a map of 110; inter-session loops "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("session 'east' placed in the map's frame"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("inter-session loop east/000005 -> "), std::string::npos) << r.out;
+  // The trajectory: the second session's true poses in the map's world, the first session's odometry frame (its
+  // first frame; its odometry is exact here).
+  const io::Trajectory t = io::readTrajectory(path("t1.txt"), path("s2/calib.txt"), io::PoseFrame::kCam0).trajectory;
+  ASSERT_EQ(t.poses.size(), 40u);
+  for (size_t i = 0; i < t.poses.size(); ++i) {
+    const Eigen::Matrix4d truth = first_.poses.front().inverse() * second_.poses[i];
+    EXPECT_LT((t.poses[i].translation() - truth.topRightCorner<3, 1>()).norm(), 0.1) << i;
+  }
+  const auto info = test::run("map info " + path("m2.sgtmap"));
+  ASSERT_EQ(info.status, 0) << info.out;
+  EXPECT_NE(info.out.find("frames 150 (with poses), first 000000, last east/000039"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("sessions 2:\n  m: 110 frames (000000 .. 000109)\n  east: 40 frames (east/000000 .. "
+                          "east/000039)"),
+            std::string::npos)
+      << info.out;
+  EXPECT_NE(info.out.find("  SESS v1  "), std::string::npos) << info.out;
+  // The same at three threads, byte for byte.
+  const auto again = test::run(session("--session-name east --out-trajectory " + path("t3.txt") + " --save-map " +
+                                       path("m3.sgtmap") + " --out " + path("loops3.csv") + " --threads 3"));
+  ASSERT_EQ(again.status, 0) << again.out;
+  EXPECT_EQ(test::fileBytes(path("t1.txt")), test::fileBytes(path("t3.txt")));
+  EXPECT_EQ(test::fileBytes(path("m2.sgtmap")), test::fileBytes(path("m3.sgtmap")));
+  EXPECT_EQ(test::fileBytes(path("loops1.csv")), test::fileBytes(path("loops3.csv")));
+  // A session of the same name cannot join again; the map given is kept as it was.
+  const std::string before = test::fileBytes(path("m2.sgtmap"));
+  const auto twice = test::run(session("--session-name east --save-map " + path("m2.sgtmap") + " --force", "m2.sgtmap"));
+  EXPECT_NE(twice.status, 0);
+  EXPECT_NE(twice.out.find("already has a session named 'east'"), std::string::npos) << twice.out;
+  EXPECT_EQ(test::fileBytes(path("m2.sgtmap")), before);
+}
+
+TEST_F(CliSessions, RefusesWhatASessionCannotDo) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"run --nodes " + path("s2/nodes") + " --map " + path("m.sgtmap"), "--map needs the session's --odometry"},
+      {session("--online"), "do not work with --map yet"},
+      {session("--out-graph " + path("g.g2o")), "do not work with --map yet"},
+      {"run --nodes " + path("s2/nodes") + " --session-name x", "--session-name names a session run with --map"},
+      {session("", "none.sgtmap"), "none.sgtmap"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = test::run(args);
+    EXPECT_NE(r.status, 0) << args;
+    EXPECT_NE(r.out.find(message), std::string::npos) << args << "\n" << r.out;
+  }
+  // Another world (the classes changed): no inter-session loop, so nothing is placed and nothing written.
+  test::NodeSequence other = second_;
+  for (auto& frame : other.frames) {
+    for (Node& n : frame) n.label = (n.label + 1) % kNumPaperClasses;
+  }
+  write(other, path("s3"));
+  const auto r = test::run("run --nodes " + path("s3/nodes") + " --odometry " + path("s3/odometry.txt") + " --calib " +
+                           path("s3/calib.txt") + " --config " + path("config.yaml") + " --map " + path("m.sgtmap") +
+                           " --out-trajectory " + path("t.txt") + " --save-map " + path("x.sgtmap"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("not placed in " + path("m.sgtmap")), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(path("t.txt")));
+  EXPECT_FALSE(std::filesystem::exists(path("x.sgtmap")));
+}
+
+}  // namespace
+}  // namespace sgtllc
