@@ -37,7 +37,10 @@ Drive makeDrive(int false_count, const backend::BackendConfig& config) {
     double best_d = 3.0;
     for (int m = 0; m < kMapFrames; ++m) {
       const double dist = (d.truth[m].translation() - session_truth[q].translation()).norm();
-      if (dist < best_d) best_d = dist, best = m;
+      if (dist < best_d) {
+        best_d = dist;
+        best = m;
+      }
     }
     if (best < 0) continue;
     d.graph.loops.push_back(test::fittedLoop(best, kMapFrames + q, d.truth[best].inverse() * session_truth[q], rng,

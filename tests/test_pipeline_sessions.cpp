@@ -104,6 +104,7 @@ TEST(SessionPipeline, FramesTheMapHasAndRecognisesDoNotJoinIt) {
   int added = 0, recognised = 0;
   for (bool k : kept) added += k;
   for (const pipeline::ClosingLoop& l : session.loops()) recognised += l.edge.from < 110;
+  EXPECT_EQ(recognised, session.closing()->merge.inter_loops);  // every loop of this drive goes to the map
   EXPECT_EQ(added, 60 - session.closing()->merge.inter_accepted);  // the unrecognised frames only
   EXPECT_LE(added, 6);
   const map::Map merged = session.mergedMap();
