@@ -67,10 +67,10 @@ void runSession(const RunOptions& o) {
   }
   const bool wants_placement = !o.outputs.trajectory.empty() || !o.save_map.empty();
   if (!merge.placed && wants_placement) {
-    throw Error((o.sequence.empty() ? o.nodes : o.sequence) + ": not placed in " + o.map + ": " +
-                std::to_string(merge.inter_accepted) + " of " + std::to_string(merge.inter_loops) +
-                " inter-session loops agree, " + std::to_string(config.backend.sessions.min_inter_loops) +
-                " are needed; --out-trajectory and --save-map were not written");
+    throw Error((o.sequence.empty() ? o.nodes : o.sequence) + ": not placed in " + o.map + ": of its " +
+                std::to_string(merge.inter_loops) + " inter-session loops fewer than " +
+                std::to_string(config.backend.sessions.min_inter_loops) +
+                " agree (backend.sessions.min_inter_loops); --out-trajectory and --save-map were not written");
   }
   if (!o.outputs.trajectory.empty()) {
     io::writeTrajectory(o.outputs.trajectory, io::withPoses(odometry.trajectory, merge.result.poses),
