@@ -18,10 +18,7 @@ namespace {
 std::string defaultName(const std::string& path, bool stem) {
   std::filesystem::path p(path);
   if (!stem && !p.has_filename()) p = p.parent_path();
-  std::string name = stem ? p.stem().string() : p.filename().string();
-  for (char& c : name) {
-    if (c == '/') c = '_';
-  }
+  const std::string name = stem ? p.stem().string() : p.filename().string();
   return name.empty() ? "session" : name;
 }
 

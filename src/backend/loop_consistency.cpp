@@ -6,13 +6,18 @@
 namespace sgtllc::backend {
 
 CycleError cycleError(const Edge& i, const Edge& j, const OdometryChain& odometry) {
+  return cycleError(i, j, odometry.relative(i.from, j.from), odometry.relative(j.to, i.to),
+                    odometry.pathLength(i.from, j.from) + odometry.pathLength(j.to, i.to));
+}
+
+CycleError cycleError(const Edge& i, const Edge& j, const Eigen::Isometry3d& T_a_c, const Eigen::Isometry3d& T_d_b,
+                      double path_length) {
   // Z_i = T_a_b and, around the cycle, T_a_c · Z_j · T_d_b ≈ T_a_b, so E = Z_i⁻¹ T_a_c Z_j T_d_b ≈ I.
-  const Eigen::Isometry3d E =
-      i.T_from_to.inverse() * odometry.relative(i.from, j.from) * j.T_from_to * odometry.relative(j.to, i.to);
+  const Eigen::Isometry3d E = i.T_from_to.inverse() * T_a_c * j.T_from_to * T_d_b;
   CycleError e;
   e.translation = E.translation().norm();
   e.rotation = Eigen::AngleAxisd(E.rotation()).angle();
-  e.path_length = odometry.pathLength(i.from, j.from) + odometry.pathLength(j.to, i.to);
+  e.path_length = path_length;
   return e;
 }
 

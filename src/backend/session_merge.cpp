@@ -92,12 +92,8 @@ class MergeSolve {
 CycleError interCycle(const Edge& i, const Edge& j, const SessionGraph& g, const OdometryChain& chain, int m) {
   const Eigen::Isometry3d& A = g.map_poses[i.from];
   const Eigen::Isometry3d& C = g.map_poses[j.from];
-  const Eigen::Isometry3d E = i.T_from_to.inverse() * A.inverse() * C * j.T_from_to * chain.relative(j.to - m, i.to - m);
-  CycleError c;
-  c.translation = E.translation().norm();
-  c.rotation = Eigen::AngleAxisd(E.rotation()).angle();
-  c.path_length = chain.pathLength(j.to - m, i.to - m) + (A.translation() - C.translation()).norm();
-  return c;
+  return cycleError(i, j, A.inverse() * C, chain.relative(j.to - m, i.to - m),
+                    chain.pathLength(j.to - m, i.to - m) + (A.translation() - C.translation()).norm());
 }
 
 void checkGraph(const SessionGraph& g) {
@@ -153,7 +149,7 @@ SessionMerge mergeSession(const SessionGraph& graph, const BackendConfig& config
   std::vector<int> kept_inter, kept;
   for (int i : inter.maximumClique()) kept_inter.push_back(inter_ids[i]);
   for (int i : intra.maximumClique()) kept.push_back(intra_ids[i]);
-  out.placed = !kept_inter.empty() && static_cast<int>(kept_inter.size()) >= config.sessions.min_inter_loops;
+  out.placed = static_cast<int>(kept_inter.size()) >= config.sessions.min_inter_loops;  // validated ≥ 1
   const std::vector<int> kept_intra = kept;
   if (out.placed) kept.insert(kept.end(), kept_inter.begin(), kept_inter.end());
   std::sort(kept.begin(), kept.end());

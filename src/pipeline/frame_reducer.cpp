@@ -1,6 +1,7 @@
 #include "frame_reducer.h"
 
 #include <chrono>
+#include <string>
 
 #include "elapsed.h"
 
@@ -27,6 +28,21 @@ LoadedFrame FrameReducer::reduce(const LabeledCloud& input) const {
   f.clouds = store_.prepare(cloud);
   f.clouds_ms = msSince(start);
   return f;
+}
+
+void FrameReducer::checkLabels(const LabeledCloud& scan, int frame) const {
+  if (scan.labels.size() == scan.points.size() || !readsLabels()) return;
+  throw Error("frame " + std::to_string(frame) + ": " + std::to_string(scan.points.size()) + " points but " +
+              std::to_string(scan.labels.size()) +
+              " labels (a label per point is needed unless labeller.source is geometric)");
+}
+
+LoadedFrame FrameReducer::reduceScan(const LabeledCloud& scan, int frame) const {
+  checkLabels(scan, frame);
+  if (scan.labels.size() == scan.points.size()) return reduce(scan);
+  LabeledCloud copy = scan;
+  copy.labels.assign(copy.points.size(), 0);
+  return reduce(copy);
 }
 
 }  // namespace sgtllc::pipeline

@@ -19,6 +19,11 @@ class FrameReducer {
   /// The frame of @p scan (points in the sensor frame). LoadedFrame::extraction_ms includes the labelling. A pure
   /// function of the scan: safe to call from several threads.
   LoadedFrame reduce(const LabeledCloud& scan) const;
+  /// Throws sgtllc::Error naming frame @p frame unless @p scan has a label per point or the labels are not read.
+  void checkLabels(const LabeledCloud& scan, int frame) const;
+  /// reduce() of a scan given with a label per point or, when the labels are not read, with any (placeholders take
+  /// their place until the geometric labeller replaces them); checkLabels() first.
+  LoadedFrame reduceScan(const LabeledCloud& scan, int frame) const;
 
  private:
   label::CloudLabeller labeller_;

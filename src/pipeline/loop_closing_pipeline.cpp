@@ -31,17 +31,11 @@ int LoopClosingPipeline::numFrames() const { return detector_.numFrames(); }
 
 PipelineFrame LoopClosingPipeline::addScan(const LabeledCloud& scan,
                                            const std::optional<Eigen::Isometry3d>& T_world_frame, std::string name) {
-  const bool unpaired = scan.labels.size() != scan.points.size();
-  if (unpaired && reducer_->readsLabels()) {
-    throw Error("frame " + std::to_string(numFrames()) + ": " + std::to_string(scan.points.size()) + " points but " +
-                std::to_string(scan.labels.size()) +
-                " labels (a label per point is needed unless labeller.source is geometric)");
-  }
-  if (!accumulator_ && !unpaired) return addFrame(reducer_->reduce(scan), T_world_frame, std::move(name));
+  if (!accumulator_) return addFrame(reducer_->reduceScan(scan, numFrames()), T_world_frame, std::move(name));
+  reducer_->checkLabels(scan, numFrames());
   LabeledCloud copy = scan;
   // The geometric labeller replaces the labels; placeholders keep points and labels paired until it does.
-  if (unpaired) copy.labels.assign(copy.points.size(), 0);
-  if (!accumulator_) return addFrame(reducer_->reduce(copy), T_world_frame, std::move(name));
+  if (copy.labels.size() != copy.points.size()) copy.labels.assign(copy.points.size(), 0);
   if (!T_world_frame) {
     throw Error("frame " + std::to_string(numFrames()) + ": accumulating scans needs each scan's pose");
   }

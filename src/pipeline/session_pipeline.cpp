@@ -91,15 +91,7 @@ SessionFrame SessionPipeline::addFrame(LoadedFrame frame, const Eigen::Isometry3
 
 SessionFrame SessionPipeline::addScan(const LabeledCloud& scan, const Eigen::Isometry3d& T_odometry_frame,
                                      std::string name) {
-  if (scan.labels.size() == scan.points.size()) return addFrame(reducer_->reduce(scan), T_odometry_frame, std::move(name));
-  if (reducer_->readsLabels()) {
-    throw Error("frame " + std::to_string(own_.numFrames()) + ": " + std::to_string(scan.points.size()) +
-                " points but " + std::to_string(scan.labels.size()) +
-                " labels (a label per point is needed unless labeller.source is geometric)");
-  }
-  LabeledCloud copy = scan;
-  copy.labels.assign(copy.points.size(), 0);  // placeholders the geometric labeller replaces
-  return addFrame(reducer_->reduce(copy), T_odometry_frame, std::move(name));
+  return addFrame(reducer_->reduceScan(scan, own_.numFrames()), T_odometry_frame, std::move(name));
 }
 
 SessionFrame SessionPipeline::addNodes(std::vector<Node> nodes, const Eigen::Isometry3d& T_odometry_frame,
@@ -120,6 +112,17 @@ const SessionClosing& SessionPipeline::finish() {
   auto closing = std::make_unique<SessionClosing>();
   closing->merge = backend::mergeSession(graph, own_.config().backend);
   closing->ms = msSince(start);
+  // A frame the map recognised: its inter-session loop was accepted.
+  const size_t n = static_cast<size_t>(own_.numFrames());
+  std::vector<bool> recognised(n, false);
+  for (size_t f = 0; f < n && f < inter_loop_.size(); ++f) {
+    const int k = inter_loop_[f];
+    recognised[f] = k >= 0 && closing->merge.result.loops.at(static_cast<size_t>(k)).decision ==
+                                  backend::LoopDecision::kAccepted;
+  }
+  const backend::SessionSettings& s = own_.config().backend.sessions;
+  closing->kept = map::framesThatAdd(relocalizer_.map().poses, closing->merge.result.poses, recognised,
+                                     s.keep_distance_m, s.keep_heading_deg);
   closing_ = std::move(closing);
   return *closing_;
 }
@@ -129,17 +132,7 @@ const std::vector<Eigen::Isometry3d>& SessionPipeline::poses() const {
 }
 
 std::vector<bool> SessionPipeline::framesKept() const {
-  const size_t n = static_cast<size_t>(own_.numFrames());
-  if (!closing_) return std::vector<bool>(n, true);
-  std::vector<bool> recognised(n, false);
-  for (size_t f = 0; f < n && f < inter_loop_.size(); ++f) {
-    const int k = inter_loop_[f];
-    recognised[f] = k >= 0 && closing_->merge.result.loops.at(static_cast<size_t>(k)).decision ==
-                                  backend::LoopDecision::kAccepted;
-  }
-  const backend::SessionSettings& s = own_.config().backend.sessions;
-  return map::framesThatAdd(relocalizer_.map().poses, closing_->merge.result.poses, recognised, s.keep_distance_m,
-                            s.keep_heading_deg);
+  return closing_ ? closing_->kept : std::vector<bool>(static_cast<size_t>(own_.numFrames()), true);
 }
 
 map::Map SessionPipeline::mergedMap() const {
@@ -156,7 +149,7 @@ map::Map SessionPipeline::mergedMap() const {
   merged.poses = prior.poses;
   merged.sessions = prior.sessions;
   if (merged.sessions.empty()) merged.sessions.push_back({options_.map_session, 0, prior.size()});
-  const std::vector<bool> keep = framesKept();
+  const std::vector<bool>& keep = closing_->kept;
   int kept = 0;
   for (bool k : keep) kept += k;
   merged.sessions.push_back({options_.name, prior.size(), kept});

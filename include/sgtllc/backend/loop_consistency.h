@@ -22,6 +22,10 @@ struct CycleError {
 };
 
 CycleError cycleError(const Edge& i, const Edge& j, const OdometryChain& odometry);
+/// The same cycle with its two legs given: T_a_c from i's `from` frame to j's, T_d_b from j's `to` frame to i's,
+/// and their length (a prior map's corrected poses for one leg, docs/sessions.md).
+CycleError cycleError(const Edge& i, const Edge& j, const Eigen::Isometry3d& T_a_c, const Eigen::Isometry3d& T_d_b,
+                      double path_length);
 
 /// Whether the cycle closes within the LoopConsistency bounds at its path length.
 bool consistent(const CycleError& e, const LoopConsistency& bounds);

@@ -42,7 +42,10 @@ struct SessionFrame {
 /// What the merge made of the session.
 struct SessionClosing {
   backend::SessionMerge merge;  ///< per-loop decisions (in loops() order), poses in the map's world if placed
-  double ms = 0.0;              ///< the merge's time
+  /// Per session frame, whether it joins the merged map (map::framesThatAdd with backend.sessions.keep_distance_m
+  /// and keep_heading_deg).
+  std::vector<bool> kept;
+  double ms = 0.0;  ///< the merge's time
 };
 
 /// Not thread-safe; the answers do not depend on config.threads.
@@ -74,8 +77,7 @@ class SessionPipeline {
   const LoopClosingPipeline& session() const { return own_; }
   const SessionClosing* closing() const { return closing_.get(); }
 
-  /// The map with the session appended: the session's frames that add to it (map::framesThatAdd with
-  /// backend.sessions.keep_distance_m and keep_heading_deg) after the map's, at their merged poses, named
+  /// The map with the session appended: the session's frames that add to it (SessionClosing::kept) after the map's, at their merged poses, named
   /// NAME/FRAME, with a session entry of their own. Throws sgtllc::Error before finish() or if the session was not
   /// placed.
   map::Map mergedMap() const;
