@@ -38,7 +38,9 @@ void addLabellerSettings(std::vector<Setting>* out) {
   s.number("pole_radius", &S::pole_radius, "(0, 10]", "m", "points this close to a pole axis in the slice are pole");
   s.number("pole_max_occluded", &S::pole_max_occluded, "[0, 1]", "",
            "a pole is kept if at most this share of the points beside a side lie nearer");
-  s.number("building_min_top", &S::building_min_top, "(0, 100]", "m", "a tall segment reaches this high above the ground");
+  s.number("building_min_top", &S::building_min_top, "(0, 100]", "m",
+           "a tall segment reaches this high above the ground (a long wall cut by the view's top is a building below "
+           "it too)");
   s.number("building_min_length", &S::building_min_length, "(0, 1000]", "m", "a building is at least this long");
   s.number("fence_max_top", &S::fence_max_top, "(0, 100]", "m", "a fence ends below this height above the ground");
   s.number("fence_min_length", &S::fence_min_length, "(0, 1000]", "m", "... is at least this long");

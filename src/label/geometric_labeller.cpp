@@ -47,10 +47,16 @@ int8_t classOf(const SegmentSummary& s, const SegmentRuleConfig& r) {
   if (length <= r.pole_max_width && height >= r.pole_min_height && s.standing(r)) return kPole;  // trunk and pole
   // Tall segments reach above a car's roof: walls (building) or, without walls, crowns and hedges (vegetation).
   // A 64-beam sensor 1.73 m up with +2° of upward view sees only ~2.4 m of a wall 20 m away, so "tall" is low.
+  const bool walled = length >= r.building_min_length && wall_share >= r.min_wall_share;
   if (s.top >= r.building_min_top) {
-    if (length >= r.building_min_length && wall_share >= r.min_wall_share) return kBuilding;
+    if (walled) return kBuilding;
     if (wall_share < r.min_wall_share) return kVegetation;
   }
+  // A long wall cut by the view's top is as tall as the view lets it be: what it reaches there moves with the
+  // heading and the voxels a scan is cut into, and was either side of building_min_top (docs/labeller.md §4,
+  // "Cut by the view's top"). Crowns and hedges are not: cars merged with a bush reach the view's top near the
+  // sensor too.
+  if (s.at_view_top && walled) return kBuilding;
   if (s.top <= r.fence_max_top && length >= r.fence_min_length && width <= r.fence_max_width &&
       wall_share >= r.min_fence_wall_share) {
     return kFence;

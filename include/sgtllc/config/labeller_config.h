@@ -56,7 +56,8 @@ struct SegmentRuleConfig {
   /// (docs/labeller.md §4, "Seen whole"); 1 keeps every pole.
   double pole_max_occluded = 0.75;
   /// A tall segment reaches at least this high above the ground (m): a building if long with walls, else
-  /// vegetation.
+  /// vegetation. A long segment with walls cut by the top of the sensor's view is a building below it too
+  /// (docs/labeller.md §4, "Cut by the view's top").
   double building_min_top = 2.3;
   double building_min_length = 4.0;  ///< ... and is at least this long horizontally (m, 4 std devs)
   double fence_max_top = 2.3;        ///< a fence ends below this height above the ground (m)
