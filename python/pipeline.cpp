@@ -54,6 +54,7 @@ void bindPipeline(py::module_& m) {
                              "(4, 4) pose of the query frame in the match frame")
       .def_readonly("score", &pipeline::ClosingLoop::score, "the loop score")
       .def_readonly("score_c", &pipeline::ClosingLoop::score_c, "the consistency score")
+      .def_readonly("injected", &pipeline::ClosingLoop::injected, "a robustness test's false loop, not a detected one")
       .def_readonly("has_information", &pipeline::ClosingLoop::has_information,
                     "False: collinear inlier centres, the nominal information is used")
       .def("__repr__", [](const pipeline::ClosingLoop& l) {

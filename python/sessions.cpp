@@ -98,6 +98,22 @@ void bindSessions(py::module_& m) {
            },
            py::arg("centres"), py::arg("classes"), py::arg("pose"), py::arg("name") = "",
            "A frame as ready-made nodes: centres (N, 3), classes (N,) stable class indices; as add_scan.")
+      .def("add_loop",
+           [](PySession& p, const backend::Edge& edge, std::string query, std::string match, bool injected) {
+             pipeline::ClosingLoop l;
+             l.edge = edge;
+             l.edge.kind = backend::EdgeKind::kLoop;
+             l.query = std::move(query);
+             l.match = std::move(match);
+             l.injected = injected;
+             std::lock_guard<std::mutex> lock(p.mutex);
+             p.pipeline.addLoop(std::move(l));
+           },
+           py::arg("edge"), py::arg("query") = "", py::arg("match") = "", py::kw_only(), py::arg("injected") = false,
+           "A loop found elsewhere, merged at finish() and judged like the detected ones: edge.from_ a map frame\n"
+           "(0..M-1) or a session frame M + i, edge.to a session frame M + j, both already added; injected marks a\n"
+           "robustness test's false loop (as `sgtllc run --map --add-false-loops`). Raises sgtllc.Error after\n"
+           "finish(), for frames out of range or between two map frames.")
       .def("finish",
            [](PySession& p) {
              py::gil_scoped_release release;

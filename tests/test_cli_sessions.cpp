@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "sgtllc/io/kitti_write.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/trajectory.h"
@@ -87,12 +89,41 @@ TEST_F(CliSessions, MergesASecondSessionIntoTheMapsFrame) {
   EXPECT_EQ(test::fileBytes(path("m2.sgtmap")), before);
 }
 
+TEST_F(CliSessions, FalseInterSessionLoopsAreAllRejected) {
+  // The robustness test of docs/sessions.md: false inter-session loops (a session frame tied to a map frame more
+  // than 50 m from where it is, at a random pose) must all be rejected and leave the session where it was.
+  const auto clean = test::run(session("--json --out-trajectory " + path("t0.txt") + " --out " + path("l0.csv")), false);
+  ASSERT_EQ(clean.status, 0) << clean.out;
+  const auto noisy = test::run(session("--json --add-false-loops 0.5 --seed 3 --out-trajectory " + path("t1.txt") +
+                                       " --out " + path("l1.csv")),
+                               false);
+  ASSERT_EQ(noisy.status, 0) << noisy.out;
+  const auto a = nlohmann::json::parse(clean.out), b = nlohmann::json::parse(noisy.out);
+  const int found = a["inter_session_loops"].get<int>();
+  ASSERT_GE(found, 30);
+  EXPECT_FALSE(a.contains("injected_false_loops"));
+  EXPECT_EQ(b["inter_session_loops"].get<int>(), found);  // the loops found; the injected ones counted apart
+  EXPECT_EQ(b["injected_false_loops"].get<int>(), (found + 1) / 2);
+  EXPECT_EQ(b["injected_rejected"].get<int>(), (found + 1) / 2);
+  EXPECT_EQ(b["inter_session_accepted"], a["inter_session_accepted"]);
+  int listed = 0;
+  for (const auto& l : b["loop_list"]) {
+    if (!l["injected"].get<bool>()) continue;
+    ++listed;
+    EXPECT_NE(l["decision"].get<std::string>(), "accepted") << l.dump();
+  }
+  EXPECT_EQ(listed, (found + 1) / 2);
+  EXPECT_EQ(test::fileBytes(path("t1.txt")), test::fileBytes(path("t0.txt")));
+  EXPECT_EQ(test::fileBytes(path("l1.csv")), test::fileBytes(path("l0.csv")));  // the loops found, not the test's
+}
+
 TEST_F(CliSessions, RefusesWhatASessionCannotDo) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"run --nodes " + path("s2/nodes") + " --map " + path("m.sgtmap"), "--map needs the session's --odometry"},
       {session("--online"), "do not work with --map yet"},
       {session("--out-graph " + path("g.g2o")), "do not work with --map yet"},
-      {"run --nodes " + path("s2/nodes") + " --session-name x", "--session-name names a session run with --map"},
+      {"run --nodes " + path("s2/nodes") + " --session-name x", "--session-name and --add-false-loops go with --map"},
+      {"run --nodes " + path("s2/nodes") + " --add-false-loops 0.1", "--session-name and --add-false-loops go with --map"},
       {session("", "none.sgtmap"), "none.sgtmap"},
   };
   for (const auto& [args, message] : cases) {

@@ -144,6 +144,35 @@ TEST(SessionPipeline, ASessionWithoutInterSessionLoopsIsNotMerged) {
   EXPECT_THROW(session.finish(), Error);
 }
 
+TEST(SessionPipeline, LoopsFromElsewherePlaceASessionTheDetectorCannot) {
+  // The session of the test above, whose classes match nothing in the map, with three inter-session loops from
+  // another source (as a surveyor's tie would give): its frames 5, 15, 25 stand where the map's do.
+  const Config config = sessionConfig();
+  test::NodeSequence elsewhere = test::circleSequence(30, 0.0, 0.0, 3);
+  for (auto& frame : elsewhere.frames) {
+    for (Node& n : frame) n.label = (n.label + 1) % kNumPaperClasses;
+  }
+  pipeline::SessionPipeline session(firstMap(config), config, {"away"});
+  feed(session, elsewhere);
+  for (const int k : {5, 15, 25}) {
+    pipeline::ClosingLoop l;
+    l.edge = {k, 110 + k, Eigen::Isometry3d::Identity(), pipeline::nominalLoopInformation(config.backend.loops),
+              backend::EdgeKind::kLoop};
+    session.addLoop(l);
+  }
+  pipeline::ClosingLoop bad;
+  bad.edge.from = 3, bad.edge.to = 4;
+  EXPECT_THROW(session.addLoop(bad), Error);  // two map frames
+  bad.edge.from = 3, bad.edge.to = 110 + 30;
+  EXPECT_THROW(session.addLoop(bad), Error);  // a session frame not added yet
+  const pipeline::SessionClosing& closing = session.finish();
+  ASSERT_TRUE(closing.merge.placed);
+  EXPECT_EQ(closing.merge.inter_accepted, 3);
+  EXPECT_LT(worstError(session.poses(), elsewhere), 0.01);
+  bad.edge.from = 3, bad.edge.to = 115;
+  EXPECT_THROW(session.addLoop(bad), Error);  // after finish()
+}
+
 TEST(SessionPipeline, RefusesBadNamesAMapWithoutPosesAndFramesAfterTheEnd) {
   const Config config = sessionConfig();
   for (const char* name : {"", "a/b"}) {

@@ -205,6 +205,11 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--session-name", o->session_name,
                   "with --map: the session's name in the merged map, its frames named NAME/FRAME (default: the "
                   "folder's name)");
+  cmd->add_option("--add-false-loops", o->false_fraction,
+                  "with --map, robustness test: add this share of false inter-session loops (a session frame with an "
+                  "inter-session loop tied to a map frame > 50 m from it, a random pose); each must be rejected")
+      ->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--seed", o->seed, "seed of --add-false-loops (default 7)");
   cmd->add_flag("--online", o->online,
                 "re-optimise at every loop, as a robot would, and print each update (default: once at the end)");
   cmd->add_option("--config", o->config, "YAML configuration (see `sgtllc config`)");
@@ -238,7 +243,10 @@ void addRunCommand(CLI::App& app) {
       runSession(*o);
       return;
     }
-    if (!o->session_name.empty()) throw CLI::ValidationError("run", "--session-name names a session run with --map");
+    if (!o->session_name.empty() || o->false_fraction > 0.0) {
+      throw CLI::ValidationError("run", "--session-name and --add-false-loops go with --map (one drive's robustness "
+                                        "test is `sgtllc optimize --add-false-loops`)");
+    }
     runSequence(*o);
   });
 }

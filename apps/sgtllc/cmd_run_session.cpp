@@ -4,6 +4,7 @@
 
 #include "accumulation.h"
 #include "run_session.h"
+#include "sgtllc/eval/false_loops.h"
 #include "sgtllc/eval/sequence_eval.h"
 #include "sgtllc/io/loops_csv.h"
 #include "sgtllc/io/output_file.h"
@@ -54,18 +55,35 @@ void runSession(const RunOptions& o) {
     progress.update(index + 1, std::to_string(session.loops().size()) + " loops");
   });
   progress.finish();
+  if (o.false_fraction > 0.0) {
+    const map::Map& prior = session.map();
+    std::vector<Eigen::Isometry3d> map_poses;
+    for (const Eigen::Matrix4d& T : prior.poses) map_poses.emplace_back(T);
+    for (pipeline::ClosingLoop& l :
+         eval::falseInterSessionLoops(map_poses, session.loops(), o.false_fraction, o.seed, prior.names)) {
+      session.addLoop(std::move(l));
+    }
+  }
   const pipeline::SessionClosing& closing = session.finish();
   const backend::SessionMerge& merge = closing.merge;
+  int injected = 0, injected_rejected = 0;
+  for (size_t k = 0; k < session.loops().size(); ++k) {
+    if (!session.loops()[k].injected) continue;
+    ++injected;
+    injected_rejected += merge.result.loops[k].decision != backend::LoopDecision::kAccepted;
+  }
 
   if (!o.out.empty()) {
     std::vector<io::LoopRecord> records;
-    for (const pipeline::ClosingLoop& l : session.loops()) records.push_back(pipeline::loopRecord(l));
+    for (const pipeline::ClosingLoop& l : session.loops()) {
+      if (!l.injected) records.push_back(pipeline::loopRecord(l));  // the loops found, not the test's
+    }
     writeOutput(o.out, io::loopsCsvText(records, true), o.force);
   }
   const bool wants_placement = !o.outputs.trajectory.empty() || !o.save_map.empty();
   if (!merge.placed && wants_placement) {
     throw Error((o.sequence.empty() ? o.nodes : o.sequence) + ": not placed in " + o.map + ": of its " +
-                std::to_string(merge.inter_loops) + " inter-session loops fewer than " +
+                std::to_string(merge.inter_loops - injected) + " inter-session loops fewer than " +
                 std::to_string(config.backend.sessions.min_inter_loops) +
                 " agree (backend.sessions.min_inter_loops); --out-trajectory and --save-map were not written");
   }
@@ -91,7 +109,7 @@ void runSession(const RunOptions& o) {
                 {"frames", frames},
                 {"map_frames", session.mapFrames()},
                 {"placed", merge.placed},
-                {"inter_session_loops", merge.inter_loops},
+                {"inter_session_loops", merge.inter_loops - injected},
                 {"inter_session_accepted", merge.inter_accepted},
                 {"intra_session_loops", intra},
                 {"intra_session_accepted", intra_accepted},
@@ -99,6 +117,10 @@ void runSession(const RunOptions& o) {
                 {"ms_per_frame_p99", eval::percentile(frame_ms, 0.99)},
                 {"merge_ms", closing.ms}};
     out["frames_added_to_map"] = merge.placed ? added : 0;
+    if (injected > 0) {
+      out["injected_false_loops"] = injected;
+      out["injected_rejected"] = injected_rejected;
+    }
     if (!o.save_map.empty()) out["merged_map"] = o.save_map;
     Json list = Json::array();
     for (size_t k = 0; k < session.loops().size(); ++k) {
@@ -106,6 +128,7 @@ void runSession(const RunOptions& o) {
       list.push_back({{"query", l.query},
                       {"match", l.match},
                       {"inter_session", l.edge.from < session.mapFrames()},
+                      {"injected", l.injected},
                       {"score", l.score},
                       {"decision", backend::loopDecisionName(merge.result.loops[k].decision)},
                       {"chi2", merge.result.loops[k].chi2}});
@@ -115,10 +138,14 @@ void runSession(const RunOptions& o) {
     return;
   }
   std::cout << "frames " << frames << " against a map of " << session.mapFrames() << "; inter-session loops "
-            << merge.inter_loops << ", accepted " << merge.inter_accepted << "; intra-session loops " << intra
+            << merge.inter_loops - injected << ", accepted " << merge.inter_accepted << "; intra-session loops " << intra
             << ", accepted " << intra_accepted << "; ms per frame (both searches): median "
             << fixed(eval::percentile(frame_ms, 0.5), 2) << ", p99 " << fixed(eval::percentile(frame_ms, 0.99), 2)
             << "; merge " << fixed(closing.ms, 1) << " ms\n";
+  if (injected > 0) {
+    std::cout << "injected false inter-session loops: " << injected << ", rejected " << injected_rejected
+              << ", accepted " << injected - injected_rejected << "\n";
+  }
   const std::string name = io::escapeContent(options.name, io::kNameBytes);
   std::cout << (merge.placed ? "session '" + name + "' placed in the map's frame\n"
                              : "session '" + name + "' NOT placed: fewer than " +

@@ -21,6 +21,8 @@ struct RunOptions {
   std::string save_map;         ///< --save-map: the database, names and poses as a map file
   std::string map;              ///< --map: run the sequence as a new session against this map (docs/sessions.md)
   std::string session_name;     ///< --session-name: its name in the merged map
+  double false_fraction = 0.0;  ///< --add-false-loops: with --map, false inter-session loops (robustness test)
+  uint64_t seed = 7;            ///< --seed of --add-false-loops
   ClosingOutputs outputs;
   int threads = 0;
   int accumulate = 1;  ///< --accumulate: scans merged into each frame

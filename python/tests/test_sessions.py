@@ -70,3 +70,29 @@ def test_too_few_inter_session_loops_leave_the_session_out(tmp_path):
         sgtllc.SessionPipeline(m, c, name="map")
     m.save(str(tmp_path / "m.sgtmap"))
     assert sgtllc.load_map(str(tmp_path / "m.sgtmap")).sessions == []
+
+
+def test_a_loop_from_elsewhere_is_merged_with_the_detected_ones():
+    c = config()
+    m, seq = kitti_map(c)
+    session = sgtllc.SessionPipeline(m, c, name="later")
+    i = [seq.frame_name(k) for k in range(len(seq))].index("004501")
+    frame = session.add_scan(*seq.load(i), pose=np.eye(4))
+    # The same tie again, as another place recognition would give it; then two false ones, a map frame far away.
+    e = frame.inter.edge
+    session.add_loop(sgtllc.Edge(e.from_, e.to, e.T_from_to, e.information), "later/004501", "000052")
+    with pytest.raises(sgtllc.Error, match="two map frames"):
+        session.add_loop(sgtllc.Edge(0, 1, np.eye(4)))
+    with pytest.raises(sgtllc.Error, match="of 0..2 \\(the map's\\) and 3..3"):
+        session.add_loop(sgtllc.Edge(0, 4, np.eye(4)))  # session frame 1 was not added
+    for t in ([7.0, -3.0, 0.0], [-20.0, 5.0, 0.0]):  # two that disagree with each other too
+        far = np.eye(4)
+        far[:3, 3] = t
+        session.add_loop(sgtllc.Edge(2, 3, far, e.information), "later/004501", "000850", injected=True)
+    assert [l.injected for l in session.loops] == [False, False, True, True]
+    closing = session.finish()
+    assert closing.merge.placed and closing.merge.inter_accepted == 2
+    decisions = [d.decision for d in closing.merge.result.loops]
+    assert decisions == [sgtllc.LoopDecision.ACCEPTED] * 2 + [sgtllc.LoopDecision.INCONSISTENT] * 2
+    with pytest.raises(sgtllc.Error, match="after finish"):
+        session.add_loop(sgtllc.Edge(0, 3, np.eye(4)))

@@ -101,6 +101,19 @@ SessionFrame SessionPipeline::addNodes(std::vector<Node> nodes, const Eigen::Iso
   return addFrame(std::move(frame), T_odometry_frame, std::move(name));
 }
 
+void SessionPipeline::addLoop(ClosingLoop loop) {
+  if (closing_) throw Error("a loop was added after finish()");
+  const int m = mapFrames(), end = m + own_.numFrames();
+  const backend::Edge& e = loop.edge;
+  if (e.from < 0 || e.to < 0 || e.from >= end || e.to >= end || e.from == e.to) {
+    throw Error("an added loop joins frames " + std::to_string(e.from) + " and " + std::to_string(e.to) +
+                ": a loop joins two different frames of 0.." + std::to_string(m - 1) + " (the map's) and " +
+                std::to_string(m) + ".." + std::to_string(end - 1) + " (the session's so far)");
+  }
+  if (e.from < m && e.to < m) throw Error("an added loop joins two map frames: the map's poses are fixed");
+  loops_.push_back(std::move(loop));
+}
+
 const SessionClosing& SessionPipeline::finish() {
   if (closing_) throw Error("finish() was called already");
   if (own_.numFrames() == 0) throw Error("the session has no frames");

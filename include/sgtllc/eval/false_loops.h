@@ -22,4 +22,17 @@ std::vector<pipeline::ClosingLoop> falseLoops(const std::vector<Eigen::Isometry3
                                               uint64_t seed, const std::vector<std::string>& frame_names,
                                               const backend::LoopNoise& noise, double min_distance = 50.0);
 
+/// The same test for a session merged into a map (docs/sessions.md; `sgtllc run --map --add-false-loops F`):
+/// round(@p fraction × the inter-session loops of @p loops) false inter-session loops (at least one if
+/// @p fraction > 0 and there is one). Each takes the session frame of a random inter-session loop, which lies at that
+/// loop's map frame, and ties it to a map frame more than @p min_distance metres from it by @p map_poses, with a
+/// random relative pose (as falseLoops) and the information of that loop. Inter-session loops are those of
+/// @p loops whose `from` is below the map's frame count (map_poses.size()); match names come from @p map_names.
+/// Deterministic in @p seed. Throws sgtllc::Error if no map frame lies that far from a chosen one.
+std::vector<pipeline::ClosingLoop> falseInterSessionLoops(const std::vector<Eigen::Isometry3d>& map_poses,
+                                                          const std::vector<pipeline::ClosingLoop>& loops,
+                                                          double fraction, uint64_t seed,
+                                                          const std::vector<std::string>& map_names,
+                                                          double min_distance = 50.0);
+
 }  // namespace sgtllc::eval

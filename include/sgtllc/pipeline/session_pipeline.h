@@ -65,6 +65,12 @@ class SessionPipeline {
   /// A frame given as nodes; as addFrame.
   SessionFrame addNodes(std::vector<Node> nodes, const Eigen::Isometry3d& T_odometry_frame, std::string name = {});
 
+  /// A loop found elsewhere (another place recognition, a surveyor's tie, or eval::falseInterSessionLoops' robustness
+  /// test), merged at finish() with the loops found here and judged like them. Its edge joins map frame `from`
+  /// (0..M−1) or session frame M + i to session frame `to` = M + j, both already added; query and match name them.
+  /// Throws sgtllc::Error after finish(), for a frame out of range, or for a loop between two map frames.
+  void addLoop(ClosingLoop loop);
+
   /// Ends the session: the merge of every loop found. Called once.
   const SessionClosing& finish();
 
@@ -74,6 +80,7 @@ class SessionPipeline {
   /// The session's poses: after finish(), in the map's world if placed; before, its odometry.
   const std::vector<Eigen::Isometry3d>& poses() const;
   int mapFrames() const { return relocalizer_.map().size(); }
+  const map::Map& map() const { return relocalizer_.map(); }  ///< the map the session runs against
   const LoopClosingPipeline& session() const { return own_; }
   const SessionClosing* closing() const { return closing_.get(); }
 
