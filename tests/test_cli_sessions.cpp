@@ -117,6 +117,40 @@ TEST_F(CliSessions, FalseInterSessionLoopsAreAllRejected) {
   EXPECT_EQ(test::fileBytes(path("l1.csv")), test::fileBytes(path("l0.csv")));  // the loops found, not the test's
 }
 
+TEST_F(CliSessions, EvalScoresAMergeAgainstTheTruth) {
+  // The second session's truth in the map's world (the first session's odometry frame, its first frame).
+  std::vector<Eigen::Matrix4d> truth;
+  for (const Eigen::Matrix4d& T : second_.poses) truth.push_back(first_.poses.front().inverse() * T);
+  io::writeKittiPoses(path("s2/poses.txt"), truth);
+  const std::string args = " --nodes " + path("s2/nodes") + " --odometry " + path("s2/odometry.txt") + " --calib " +
+                           path("s2/calib.txt") + " --config " + path("config.yaml") + " --map " + path("m.sgtmap");
+  const auto r = test::run("eval " + path("s2") + args + " --json", false);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["placed"].get<bool>());
+  const auto& inter = j["inter_session_loops"];
+  EXPECT_GE(inter["found"].get<int>(), 30);
+  EXPECT_EQ(inter["correct"], inter["found"]);  // exact odometry, node noise of 3 cm: every pose within 1 m / 5 deg
+  EXPECT_EQ(inter["accepted_wrong"].get<int>(), 0);
+  EXPECT_EQ(j["intra_session_loops"]["found"].get<int>(), 0);  // 40 frames of a 100-frame lap
+  EXPECT_LT(j["ate_merged_m"]["unaligned_rmse"].get<double>(), 0.1);  // in the map's frame
+  EXPECT_LT(j["ate_merged_m"]["aligned_rmse"].get<double>(), 0.1);
+  EXPECT_EQ(j["map_frames_before"].get<int>(), 110);
+  EXPECT_EQ(j["map_frames_after"].get<int>(), 150);  // keep_distance_m 0: every frame joins
+  EXPECT_EQ(j["map_frames_unthinned"].get<int>(), 150);
+  const auto text = test::run("eval " + path("s2") + args);
+  ASSERT_EQ(text.status, 0) << text.out;
+  EXPECT_NE(text.out.find("placed in the map's frame"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("map frames: 110 before, 150 after the merge (150 if every frame were kept)"),
+            std::string::npos)
+      << text.out;
+  // Without the session's truth there is nothing to score.
+  std::filesystem::remove(path("s2/poses.txt"));
+  const auto missing = test::run("eval " + path("s2") + args);
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.out.find("poses.txt: missing (evaluating a merge"), std::string::npos) << missing.out;
+}
+
 TEST_F(CliSessions, RefusesWhatASessionCannotDo) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"run --nodes " + path("s2/nodes") + " --map " + path("m.sgtmap"), "--map needs the session's --odometry"},

@@ -9,6 +9,7 @@
 #include "common.h"
 #include "localization.h"
 #include "loop_closing.h"
+#include "merge_eval.h"
 #include "relocalization_eval.h"
 #include "trajectory_metrics.h"
 #include "sgtllc/eval/metric_text.h"
@@ -308,7 +309,9 @@ void addEvalCommand(CLI::App& app) {
   addClosingOutputOptions(*cmd, o->outputs);
   cmd->add_option("--map", o->map,
                   "the relocalization protocol instead: relocalize every frame in this map (`sgtllc run --save-map` "
-                  "of an earlier session) and score against both sessions' poses (docs/relocalization.md)");
+                  "of an earlier session) and score against both sessions' poses (docs/relocalization.md); with "
+                  "--odometry, merge the sequence into the map as `run --map` does and score the merge against "
+                  "poses.txt (docs/sessions.md)");
   addTrackOption(cmd, &o->track);
   cmd->add_flag("--force", o->force, "overwrite an existing report in --report (and existing output files)");
   cmd->callback([o] {
@@ -324,6 +327,19 @@ void addEvalCommand(CLI::App& app) {
     }
     if (o->accumulate > 1 && !o->nodes.empty()) {
       throw CLI::ValidationError("eval", "--accumulate merges scans: give SEQ_DIR without --nodes");
+    }
+    if (!o->map.empty() && !o->odometry.empty()) {
+      if (!o->pairs.empty() || !o->report.empty() || o->track || !o->outputs.trajectory.empty() ||
+          !o->outputs.graph.empty() || !o->outputs.loops.empty()) {
+        throw CLI::ValidationError("eval", "--map with --odometry evaluates a merge alone: drop --pairs, --report, "
+                                           "--track and the --out-* files (`sgtllc run --map` writes them)");
+      }
+      RunOptions run;
+      run.sequence = o->sequence, run.nodes = o->nodes, run.labels_dir = o->labels_dir;
+      run.odometry = o->odometry, run.calib = o->calib, run.pose_frame = o->pose_frame, run.map = o->map;
+      run.accumulate = o->accumulate, run.json = o->json, run.quiet = true;
+      evalMerge(run, loadConfigOption(o->config, o->threads, o->labeller));
+      return;
     }
     if (!o->map.empty()) {
       if (!o->pairs.empty() || !o->odometry.empty() || !o->report.empty() || o->accumulate > 1) {

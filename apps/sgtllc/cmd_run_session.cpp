@@ -25,24 +25,23 @@ std::string defaultName(const std::string& path, bool stem) {
 
 }  // namespace
 
-void runSession(const RunOptions& o) {
-  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
-  if (!o.out.empty()) checkWritable(o.out, o.force);
-  if (!o.outputs.trajectory.empty()) checkWritable(o.outputs.trajectory, o.force);
-  if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
+StreamedSession streamSession(const RunOptions& o, const Config& config) {
+  StreamedSession out;
   pipeline::SessionOptions options;
   options.name = o.session_name.empty() ? defaultName(o.nodes.empty() ? o.sequence : o.nodes, false) : o.session_name;
   options.map_session = defaultName(o.map, true);
-  pipeline::SessionPipeline session(map::readMapFile(o.map, config), config, options, o.map);
-  pipeline::FrameSource source = frameSource(o.sequence, o.nodes, config, o.labels_dir);
-  const Odometry odometry = readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size());
-  applyAccumulation(source, o.accumulate, &odometry, o.sequence, o.calib, o.pose_frame);
+  out.name = options.name;
+  out.pipeline = std::make_unique<pipeline::SessionPipeline>(map::readMapFile(o.map, config), config, options, o.map);
+  pipeline::SessionPipeline& session = *out.pipeline;
+  out.source = std::make_unique<pipeline::FrameSource>(frameSource(o.sequence, o.nodes, config, o.labels_dir));
+  pipeline::FrameSource& source = *out.source;
+  out.odometry = readOdometry(o.odometry, sequenceCalib(o.calib, o.sequence), o.pose_frame, source.size());
+  applyAccumulation(source, o.accumulate, &out.odometry, o.sequence, o.calib, o.pose_frame);
 
-  std::vector<double> frame_ms;
   Progress progress("frames", source.size());
   pipeline::streamFrames(source, config.threads, [&](size_t index, pipeline::LoadedFrame& loaded) {
-    const pipeline::SessionFrame f = session.addFrame(std::move(loaded), odometry.poses[index], source.name(index));
-    frame_ms.push_back(f.own.detection.timing.total_ms() + f.in_map.search.timing.total_ms());
+    const pipeline::SessionFrame f = session.addFrame(std::move(loaded), out.odometry.poses[index], source.name(index));
+    out.frame_ms.push_back(f.own.detection.timing.total_ms() + f.in_map.search.timing.total_ms());
     if (!o.json && !o.quiet) {
       for (const std::optional<pipeline::ClosingLoop>* l : {&f.own.loop, &f.inter}) {
         if (!l->has_value()) continue;
@@ -55,6 +54,18 @@ void runSession(const RunOptions& o) {
     progress.update(index + 1, std::to_string(session.loops().size()) + " loops");
   });
   progress.finish();
+  return out;
+}
+
+void runSession(const RunOptions& o) {
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
+  if (!o.out.empty()) checkWritable(o.out, o.force);
+  if (!o.outputs.trajectory.empty()) checkWritable(o.outputs.trajectory, o.force);
+  if (!o.save_map.empty()) checkWritable(o.save_map, o.force);
+  StreamedSession run = streamSession(o, config);
+  pipeline::SessionPipeline& session = *run.pipeline;
+  const Odometry& odometry = run.odometry;
+  const std::vector<double>& frame_ms = run.frame_ms;
   if (o.false_fraction > 0.0) {
     const map::Map& prior = session.map();
     std::vector<Eigen::Isometry3d> map_poses;
@@ -105,7 +116,7 @@ void runSession(const RunOptions& o) {
   if (o.json) {
     Json out = {{"sequence", o.nodes.empty() ? o.sequence : o.nodes},
                 {"map", o.map},
-                {"session", options.name},
+                {"session", run.name},
                 {"frames", frames},
                 {"map_frames", session.mapFrames()},
                 {"placed", merge.placed},
@@ -146,7 +157,7 @@ void runSession(const RunOptions& o) {
     std::cout << "injected false inter-session loops: " << injected << ", rejected " << injected_rejected
               << ", accepted " << injected - injected_rejected << "\n";
   }
-  const std::string name = io::escapeContent(options.name, io::kNameBytes);
+  const std::string name = io::escapeContent(run.name, io::kNameBytes);
   std::cout << (merge.placed ? "session '" + name + "' placed in the map's frame\n"
                              : "session '" + name + "' NOT placed: fewer than " +
                                    std::to_string(config.backend.sessions.min_inter_loops) +

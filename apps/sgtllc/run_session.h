@@ -2,10 +2,14 @@
 // docs/sessions.md).
 #pragma once
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "loop_closing.h"
 #include "sgtllc/io/trajectory_frame.h"
+#include "sgtllc/pipeline/frame_source.h"
+#include "sgtllc/pipeline/session_pipeline.h"
 
 namespace sgtllc::cli {
 
@@ -31,6 +35,17 @@ struct RunOptions {
   bool force = false;
   bool online = false;  ///< re-optimise at every loop instead of once at the end
 };
+
+/// A session fed frame by frame into its map (the part `run --map` and `eval --map --odometry` share): the map,
+/// the frames, their odometry; each loop printed unless --quiet or --json. The source is kept for its frame numbers.
+struct StreamedSession {
+  std::unique_ptr<pipeline::SessionPipeline> pipeline;
+  std::unique_ptr<pipeline::FrameSource> source;
+  Odometry odometry;
+  std::vector<double> frame_ms;  ///< per frame, both searches
+  std::string name;              ///< the session's name in the merged map
+};
+StreamedSession streamSession(const RunOptions& o, const Config& config);
 
 /// The run with --map: every frame searched in the map and among the session's own frames, then merged into the
 /// map's frame; writes --out-trajectory (the session in the map's frame), --save-map (the merged map) and --out.
