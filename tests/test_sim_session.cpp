@@ -143,6 +143,28 @@ TEST(SimSessionConfig, RefusesWhatCannotShareAWorld) {
   EXPECT_THAT(message(chained), HasSubstr("must not be a second session itself"));
 }
 
+TEST_F(SimSession, AFollowingSessionDrivesOnlyTheFirstOnesStreets) {
+  // --follow: the same streets again, from where the first session started, either way; a plain second session
+  // drives a tenth or more of its frames more than 20 m from every first-session frame (above).
+  SimConfig c = secondConfig();
+  c.follow = true;
+  const Simulator follower(c);
+  ASSERT_EQ(follower.numFrames(), 600);
+  const std::vector<NearestFrame> nearest =
+      nearestFrames(positions(worldPoses(*first_)), positions(worldPoses(follower)));
+  int near = 0, far = 0;
+  for (const NearestFrame& f : nearest) {
+    near += f.distance <= 3.0;
+    far += f.distance > 20.0;
+  }
+  EXPECT_GE(near, 600 * 0.95) << near;
+  EXPECT_EQ(far, 0);
+  EXPECT_NE(worldPoses(follower), worldPoses(*second_));
+  SimConfig alone = firstConfig();
+  alone.follow = true;
+  EXPECT_THROW(alone.validate(), Error);  // nothing to follow
+}
+
 TEST(SimManifest, ReadsBackExactly) {
   SimConfig c = secondConfig(321, 12);
   c.label_noise = 0.1234567890123;
@@ -163,6 +185,15 @@ TEST(SimManifest, ReadsBackExactly) {
   EXPECT_EQ(r.world_of->seed, 4u);
   EXPECT_FALSE(r.world_of->world_of);
   EXPECT_FALSE(parseManifest(manifestText(firstConfig()), "m.txt").world_of);
+  EXPECT_FALSE(r.follow);
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("follow")));  // manifests written before --follow are unchanged
+  c.follow = true;
+  EXPECT_THAT(manifestText(c), HasSubstr("\nfollow 1\n"));
+  EXPECT_TRUE(parseManifest(manifestText(c), "m.txt").follow);
+  EXPECT_THROW(parseManifest(manifestText(c) + "follow 1\n", "m.txt"), Error);  // twice
+  std::string two = manifestText(c);
+  two.replace(two.find("follow 1"), 8, "follow 2");
+  EXPECT_THROW(parseManifest(two, "m.txt"), Error);
 }
 
 TEST(SimManifest, BadManifestsAreNamed) {

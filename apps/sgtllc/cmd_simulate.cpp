@@ -28,6 +28,7 @@ namespace fs = std::filesystem;
 struct SimulateOptions {
   std::string out;
   std::string world_of;  ///< first session's folder ("" = a world of its own)
+  bool follow = false;   ///< --follow: the second session drives only the first one's roads
   int frames = 0;
   uint64_t seed = 1;
   bool seed_given = false, scene_given = false;
@@ -161,6 +162,7 @@ void checkFirstSession(const sim::Simulator& s, const std::string& dir) {
 void simulate(const SimulateOptions& o) {
   sim::SimConfig config;
   config.world_of = firstSession(o);
+  config.follow = o.follow;
   config.frames = o.frames;
   // A second session's default seed: the next one after its first session's.
   config.seed = o.seed_given || !config.world_of ? o.seed : config.world_of->seed + 1;
@@ -222,6 +224,9 @@ void addSimulateCommand(CLI::App& app) {
                   "a second session through the world of this earlier simulated sequence (its streets and "
                   "buildings; new traffic, route and noise), with poses in its frame; writes cross_session.txt")
       ->check(CLI::ExistingDirectory);
+  cmd->add_flag("--follow", o->follow,
+                "with --world-of: drive only the first session's roads, either way (the same streets again: no new "
+                "road), e.g. for merging many drives into one map");
   cmd->add_option("--scene", o->scene, "world preset (with --world-of: the first session's)")
       ->check(CLI::IsMember({"urban", "suburban", "rural"}))
       ->capture_default_str();
@@ -259,6 +264,7 @@ void addSimulateCommand(CLI::App& app) {
     o->scene_given = cmd->count("--scene") > 0;
     // Command-line mistakes, before any file is read: CLI11's errors, so they exit with the usage code.
     if (o->world_of.empty() && !o->seed_given) throw CLI::RequiredError("--seed (needed without --world-of)");
+    if (o->follow && o->world_of.empty()) throw CLI::ValidationError("--follow", "follows the roads of --world-of");
     if (!o->world_of.empty() && cmd->count("--revisits") > 0) {
       throw CLI::ValidationError("--revisits", "a second session (--world-of) plans no revisits of its own");
     }

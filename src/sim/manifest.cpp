@@ -128,6 +128,7 @@ std::string manifestText(const SimConfig& config) {
   out += "format " + number(kManifestFormat) + "\n";
   appendSettings(out, config, "");
   if (config.world_of) appendSettings(out, *config.world_of, kFirst);
+  if (config.follow) out += "follow 1\n";  // only when set: manifests written before it stay as they were
   return out;
 }
 
@@ -141,6 +142,11 @@ SimConfig parseManifest(const std::string& text, const std::string& path) {
   if (format < 1) throw e.bad("format", std::to_string(format));
   SimConfig c = readSettings(e, "");
   if (e.has(std::string(kFirst) + "frames")) c.world_of = std::make_shared<SimConfig>(readSettings(e, kFirst));
+  if (e.has("follow")) {
+    const int follow = e.get<int>("follow");
+    if (follow != 0 && follow != 1) throw e.bad("follow", std::to_string(follow));
+    c.follow = follow == 1;
+  }
   e.checkAllUsed();
   try {
     c.validate();

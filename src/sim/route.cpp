@@ -26,8 +26,9 @@ int directed(int edge, bool forward) { return 2 * edge + (forward ? 0 : 1); }
 
 class Planner {
  public:
-  /// @p prior: the first session, for a second session's route (null for a first session).
-  Planner(const RoadNetwork& net, uint64_t seed, const PriorRoute* prior = nullptr)
+  /// @p prior: the first session, for a second session's route (null for a first session); it starts at the
+  /// intersection nearest the first session's start if @p start_where_prior_did.
+  Planner(const RoadNetwork& net, uint64_t seed, const PriorRoute* prior = nullptr, bool start_where_prior_did = false)
       : net_(net), rng_(seed, Stream::kRoute), visits_(net.edges().size()) {
     // Start at a random intersection away from the border when there is one (and away from where the first
     // session started, so the second one's start differs).
@@ -42,6 +43,13 @@ class Planner {
       }
     }
     node_ = inner.empty() ? 0 : inner[rng_.uniformInt(0, static_cast<int>(inner.size()) - 1)];
+    if (prior && start_where_prior_did) {  // the same streets again: from the first session's start
+      for (size_t n = 0; n < net.nodes().size(); ++n) {
+        if ((net.nodes()[n].p - prior->start).norm() < (net.nodes()[node_].p - prior->start).norm()) {
+          node_ = static_cast<int>(n);
+        }
+      }
+    }
     if (prior) {
       known_.assign(net.edges().size(), 0);
       for (const Leg& leg : prior->legs) known_[leg.edge] = 1;
@@ -66,6 +74,30 @@ class Planner {
       drive(Leg{target / 2, target % 2 == 0, 0.0, VisitKind::kExplore, -1}, true);
     }
     if (length_ < goal) explore(goal - length_);
+  }
+
+  /// A second session that drives only the first session's roads: the least driven of them in this session,
+  /// nearest first, reached by the cheapest path (which may cross a road the first session did not drive).
+  void followAgain() {
+    follow_ = true;
+    int fewest = std::numeric_limits<int>::max();
+    for (size_t e = 0; e < known_.size(); ++e) {
+      if (known_[e]) fewest = std::min(fewest, visits_[e]);
+    }
+    const std::vector<double> cost = costsFromHere();
+    int target = -1;
+    for (size_t d = 0; d < cost.size(); ++d) {
+      const int e = static_cast<int>(d / 2);
+      if (known_[e] && visits_[e] == fewest && std::isfinite(cost[d]) && (target < 0 || cost[d] < cost[target])) {
+        target = static_cast<int>(d);
+      }
+    }
+    if (target < 0) {  // none reachable: on as a first session would
+      explore(kFollowStretch);
+      return;
+    }
+    transferTo(target);
+    drive(Leg{target / 2, target % 2 == 0, 0.0, VisitKind::kExplore, -1}, true);
   }
 
   /// A second session's stretch preferring roads the first session never drove.
@@ -303,16 +335,21 @@ std::vector<Leg> planRoute(const RoadNetwork& net, double length, int revisits, 
   return planner.legs();
 }
 
-std::vector<Leg> planSecondRoute(const RoadNetwork& net, double length, const PriorRoute& prior, uint64_t seed) {
+std::vector<Leg> planSecondRoute(const RoadNetwork& net, double length, const PriorRoute& prior, uint64_t seed,
+                                 bool follow_only) {
   for (const Leg& leg : prior.legs) {
     if (leg.edge < 0 || leg.edge >= static_cast<int>(net.edges().size())) {
       throw Error("the first session's route does not belong to this road network");
     }
   }
-  Planner planner(net, seed, &prior);
+  Planner planner(net, seed, &prior, follow_only);
   // Spare road at the end, as planRoute leaves.
   const double goal = 1.2 * length + 100.0;
   while (planner.length() < goal) {
+    if (follow_only) {
+      planner.followAgain();
+      continue;
+    }
     planner.follow(kFollowStretch);
     if (planner.length() < goal) planner.leave(kFreshStretch);
   }

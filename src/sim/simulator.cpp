@@ -58,6 +58,7 @@ void SimConfig::validate() const {
   if (!(sensor.range_noise >= 0.0) || !(sensor.dropout >= 0.0 && sensor.dropout < 1.0)) {
     throw Error("sensor noise settings are invalid");
   }
+  if (follow && !world_of) throw Error("follow: only a second session (world_of) follows a first one's roads");
   if (world_of) {
     if (world_of->world_of) throw Error("the first session of a second session must not be a second session itself");
     if (world_of->scene != scene) {
@@ -118,11 +119,25 @@ void Simulator::driveSecondSession() {
   for (const FramePose& p : first.poses()) first_poses_.push_back(p.T_world_lidar);
   PriorRoute prior;
   prior.legs = first.route();
+  if (config_.follow) {
+    // Only the roads the first session drove to their end: its route runs on past its last frame (planRoute leaves
+    // spare road).
+    double driven = 0.0;
+    for (size_t i = 1; i < first_poses_.size(); ++i) {
+      driven += (first_poses_[i].topRightCorner<3, 1>() - first_poses_[i - 1].topRightCorner<3, 1>()).norm();
+    }
+    double along = 0.0;
+    size_t reached = 0;
+    while (reached < prior.legs.size() && along + legLength(world_.roads, prior.legs[reached]) <= driven) {
+      along += legLength(world_.roads, prior.legs[reached++]);  // legs driven to their end
+    }
+    prior.legs.resize(reached);
+  }
   prior.start = first.poses()[0].T_world_lidar.topRightCorner<2, 1>();
   const TrajectoryConfig drive = trajectoryConfig(config_);
   double length = expectedLength(config_);
   for (int attempt = 0; attempt < kPlanAttempts; ++attempt, length *= 1.5) {
-    route_ = planSecondRoute(world_.roads, length, prior, config_.seed);
+    route_ = planSecondRoute(world_.roads, length, prior, config_.seed, config_.follow);
     poses_ = driveRoute(world_, route_, drive);
     if (numFrames() == config_.frames) return;
   }

@@ -50,8 +50,11 @@ struct PriorRoute {
 /// A second session's route of at least @p length metres through the network @p prior was driven on: it starts at
 /// an intersection away from the first session's start, then alternates stretches along roads the first session
 /// drove (either direction: the relocalization positives) and stretches of roads it never drove (the negatives),
-/// about kFollowStretch and kFreshStretch metres each (route.cpp). No planned revisits of its own.
-std::vector<Leg> planSecondRoute(const RoadNetwork& net, double length, const PriorRoute& prior, uint64_t seed);
+/// about kFollowStretch and kFreshStretch metres each (route.cpp). No planned revisits of its own. With
+/// @p follow_only, only stretches along the first session's roads: the same streets again, either way (where every
+/// road the first session drove has been driven, it goes on preferring them).
+std::vector<Leg> planSecondRoute(const RoadNetwork& net, double length, const PriorRoute& prior, uint64_t seed,
+                                 bool follow_only = false);
 
 /// Length of a leg (m).
 inline double legLength(const RoadNetwork& net, const Leg& leg) { return net.edges()[leg.edge].length(); }

@@ -32,6 +32,9 @@ struct SimConfig {
   /// from `seed`, as are the route, the start and the noise — with poses in the first session's frame 0. The
   /// scene must match; the first session may not itself be a second one. Null = a world of its own.
   std::shared_ptr<const SimConfig> world_of;
+  /// A second session that drives only the first session's roads (either way), as a robot driving the same streets
+  /// again: no stretches of new road. Needs world_of.
+  bool follow = false;
 
   /// Throws sgtllc::Error naming the first bad field.
   void validate() const;
