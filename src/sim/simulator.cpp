@@ -131,7 +131,8 @@ void Simulator::driveSecondSession() {
     while (reached < prior.legs.size() && along + legLength(world_.roads, prior.legs[reached]) <= driven) {
       along += legLength(world_.roads, prior.legs[reached++]);  // legs driven to their end
     }
-    prior.legs.resize(reached);
+    // A first session shorter than its first road keeps that road.
+    prior.legs.resize(std::min(prior.legs.size(), std::max<size_t>(reached, 1)));
   }
   prior.start = first.poses()[0].T_world_lidar.topRightCorner<2, 1>();
   const TrajectoryConfig drive = trajectoryConfig(config_);
