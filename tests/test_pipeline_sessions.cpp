@@ -163,6 +163,8 @@ TEST(SessionPipeline, LoopsFromElsewherePlaceASessionTheDetectorCannot) {
   pipeline::ClosingLoop bad;
   bad.edge.from = 3, bad.edge.to = 4;
   EXPECT_THROW(session.addLoop(bad), Error);  // two map frames
+  bad.edge.from = 115, bad.edge.to = 3;
+  EXPECT_THROW(session.addLoop(bad), Error);  // from the session to the map: the other way round
   bad.edge.from = 3, bad.edge.to = 110 + 30;
   EXPECT_THROW(session.addLoop(bad), Error);  // a session frame not added yet
   const pipeline::SessionClosing& closing = session.finish();

@@ -111,6 +111,10 @@ void SessionPipeline::addLoop(ClosingLoop loop) {
                 std::to_string(m) + ".." + std::to_string(end - 1) + " (the session's so far)");
   }
   if (e.from < m && e.to < m) throw Error("an added loop joins two map frames: the map's poses are fixed");
+  if (e.to < m) {
+    throw Error("an added loop ends in map frame " + std::to_string(e.to) +
+                ": a loop goes from a map or session frame to a session frame");
+  }
   loops_.push_back(std::move(loop));
 }
 

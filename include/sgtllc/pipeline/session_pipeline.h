@@ -68,7 +68,8 @@ class SessionPipeline {
   /// A loop found elsewhere (another place recognition, a surveyor's tie, or eval::falseInterSessionLoops' robustness
   /// test), merged at finish() with the loops found here and judged like them. Its edge joins map frame `from`
   /// (0..M−1) or session frame M + i to session frame `to` = M + j, both already added; query and match name them.
-  /// Throws sgtllc::Error after finish(), for a frame out of range, or for a loop between two map frames.
+  /// Throws sgtllc::Error after finish(), for a frame out of range, or for a loop between two map frames or ending in
+  /// a map frame.
   void addLoop(ClosingLoop loop);
 
   /// Ends the session: the merge of every loop found. Called once.
