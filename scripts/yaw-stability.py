@@ -4,10 +4,10 @@
 A spinning LiDAR at one spot sees the same scene whatever the car's heading: a scan yawed about the sensor's
 vertical axis is what that sensor would give there facing another way (less the seam and the car's own shadow). A
 labeller whose classes repeat from any heading gives the yawed scan the same classes and nodes; one that does not
-fails at every revisit with a turn (docs/labeller.md §4, "Cut by the view's top"). For each real scan and each yaw this prints the
-per-class IoU of the two labellings (the points are the same, in the same order), the share of nodes repeated
-within 0.5 m (nodes of the yawed scan turned back) and whether `compare_pair` of the scan against its yawed self is
-a loop, with its inliers.
+fails at every revisit with a turn (docs/labeller.md §4, "Cut by the view's top"). For each real scan and each yaw
+this prints the per-class IoU of the two labellings (the points are the same, in the same order), the share of
+nodes repeated within 0.5 m (nodes of the yawed scan turned back) and whether `compare_pair` of the scan against
+its yawed self is a loop, with its inliers.
 
     scripts/yaw-stability.py [--yaw 1,5,62,175] [--config C.yaml] SCAN.bin ...
 
