@@ -200,6 +200,7 @@ class SessionSettings:
     min_inter_loops: int
     keep_distance_m: float
     keep_heading_deg: float
+    max_covering_sessions: int
 class BackendConfig:
     odometry: OdometryNoise
     loops: LoopNoise

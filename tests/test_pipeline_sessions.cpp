@@ -119,13 +119,56 @@ TEST(SessionPipeline, FramesTheMapHasAndRecognisesDoNotJoinIt) {
       poses.emplace_back(T);
       if (turned) poses.back().rotate(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()));
     }
-    const std::vector<bool> keep = map::framesThatAdd(map_poses, poses, std::vector<bool>(60, known), distance, 45.0);
+    const std::vector<bool> keep =
+        map::framesThatAdd(map_poses, {}, poses, std::vector<bool>(60, known), {distance, 45.0, 2});
     return std::count(keep.begin(), keep.end(), true);
   };
   EXPECT_EQ(added_by(false, true, 2.0), 0);   // facing the map's way, recognised: none
   EXPECT_EQ(added_by(true, true, 2.0), 60);   // turned round: the map's frames face the other way
-  EXPECT_EQ(added_by(false, false, 2.0), 60); // not recognised: all
+  EXPECT_EQ(added_by(false, false, 2.0), 60); // not recognised, covered by one drive: all
   EXPECT_EQ(added_by(false, true, 0.0), 60);  // no distance: all
+}
+
+TEST(SessionPipeline, AnUnrecognisedPlaceGainsOneMoreDrivesViewNotOnePerDrive) {
+  // A map of two drives along the x axis, one frame a metre, both facing +x: drive 0 at x = 0..9, drive 1 at
+  // x = 5..14 (so x = 5..9 is covered by both). A third drive's frames at x = 0.4..14.4, none recognised.
+  std::vector<Eigen::Matrix4d> map_poses;
+  std::vector<int> drive;
+  for (int x = 0; x < 10; ++x) {
+    map_poses.push_back(Eigen::Matrix4d::Identity());
+    map_poses.back()(0, 3) = x;
+    drive.push_back(0);
+  }
+  for (int x = 5; x < 15; ++x) {
+    map_poses.push_back(Eigen::Matrix4d::Identity());
+    map_poses.back()(0, 3) = x;
+    drive.push_back(1);
+  }
+  std::vector<Eigen::Isometry3d> frames;
+  for (int x = 0; x < 15; ++x) frames.push_back(Eigen::Isometry3d(Eigen::Translation3d(x + 0.4, 0.0, 0.0)));
+  const std::vector<bool> missed(frames.size(), false);
+  const auto kept = [&](int max_sessions) {
+    const std::vector<bool> keep = map::framesThatAdd(map_poses, drive, frames, missed, {0.7, 45.0, max_sessions});
+    std::vector<int> xs;
+    for (size_t f = 0; f < keep.size(); ++f) {
+      if (keep[f]) xs.push_back(static_cast<int>(f));
+    }
+    return xs;
+  };
+  // Within 0.7 m of x + 0.4 lie the map frames at x and x + 1: two drives cover x = 4 (frame 5 of drive 1) to 9.
+  EXPECT_EQ(kept(2), (std::vector<int>{0, 1, 2, 3, 10, 11, 12, 13, 14}));
+  EXPECT_EQ(kept(1), std::vector<int>{});                 // 1: no unrecognised covered frame joins
+  EXPECT_EQ(kept(3), std::vector<int>(kept(1000)));       // at most two drives here: 3 is every frame
+  EXPECT_EQ(kept(3).size(), frames.size());
+  // Facing the other way, nothing covers them: all join, whatever the cap.
+  for (Eigen::Isometry3d& T : frames) T.rotate(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(kept(1).size(), frames.size());
+  // At x = 6.4, covered by both drives: recognised or missed, it does not join; as a map that lists no drives (one
+  // drive), the missed one joins.
+  const std::vector<Eigen::Isometry3d> both(2, Eigen::Isometry3d(Eigen::Translation3d(6.4, 0.0, 0.0)));
+  const map::ThinningRule rule{0.7, 45.0, 2};
+  EXPECT_EQ(map::framesThatAdd(map_poses, drive, both, {true, false}, rule), (std::vector<bool>{false, false}));
+  EXPECT_EQ(map::framesThatAdd(map_poses, {}, both, {true, false}, rule), (std::vector<bool>{false, true}));
 }
 
 TEST(SessionPipeline, ASessionWithoutInterSessionLoopsIsNotMerged) {

@@ -168,7 +168,8 @@ void runSession(const RunOptions& o) {
   if (!o.save_map.empty()) {
     std::cout << "wrote map " << o.save_map << " (" << session.mapFrames() + added << " frames: the map's "
               << session.mapFrames() << " and " << added << " of the session's " << frames
-              << "; the others are places the map has and recognised)\n";
+              << "; the others are places the map already has: docs/sessions.md, \"A map that does not grow with "
+                 "revisits\")\n";
   }
 }
 

@@ -67,6 +67,8 @@ void addBackendSettings(std::vector<Setting>* out) {
            "a recognised session frame with a map frame this near (and keep_heading_deg) is not added; 0: all are");
   e.number("keep_heading_deg", &SessionSettings::keep_heading_deg, "[0, 180]", "deg",
            "... whose forward axis is within this of its own");
+  e.number("max_covering_sessions", &SessionSettings::max_covering_sessions, "[1, 1000]", "",
+           "an unrecognised frame the map covers is added only while its covering map frames come from fewer sessions");
 }
 
 }  // namespace sgtllc::detail

@@ -138,8 +138,9 @@ const SessionClosing& SessionPipeline::finish() {
                                   backend::LoopDecision::kAccepted;
   }
   const backend::SessionSettings& s = own_.config().backend.sessions;
-  closing->kept = map::framesThatAdd(relocalizer_.map().poses, closing->merge.result.poses, recognised,
-                                     s.keep_distance_m, s.keep_heading_deg);
+  const map::Map& map = relocalizer_.map();
+  closing->kept = map::framesThatAdd(map.poses, map::frameSessions(map), closing->merge.result.poses, recognised,
+                                     {s.keep_distance_m, s.keep_heading_deg, s.max_covering_sessions});
   closing_ = std::move(closing);
   return *closing_;
 }

@@ -81,10 +81,15 @@ struct SessionSettings {
   int min_inter_loops = 2;
   /// A session frame joins the merged map unless the map recognised it (its inter-session loop was accepted) and a
   /// map frame lies within this distance (m) and keep_heading_deg of its pose: the map then grows with the streets
-  /// covered, not with the drives (docs/sessions.md, "Thinning"). 0: every frame joins.
+  /// covered, not with the drives (docs/sessions.md, "A map that does not grow with revisits"). 0: every frame joins.
   double keep_distance_m = 3.0;
   /// ... and heading: a map frame facing more than this away (deg) does not cover the session frame.
   double keep_heading_deg = 45.0;
+  /// A covered frame the map did not recognise joins only while the map frames covering it come from fewer than
+  /// this many sessions: a place the detector misses gains one more drive's view, not one per drive, so the map's
+  /// size stays bounded by the streets (docs/sessions.md, "A map that does not grow with revisits"). 1: no
+  /// unrecognised covered frame joins.
+  int max_covering_sessions = 2;
 };
 
 struct BackendConfig {
