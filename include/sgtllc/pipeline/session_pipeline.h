@@ -42,8 +42,8 @@ struct SessionFrame {
 /// What the merge made of the session.
 struct SessionClosing {
   backend::SessionMerge merge;  ///< per-loop decisions (in loops() order), poses in the map's world if placed
-  /// Per session frame, whether it joins the merged map (map::framesThatAdd with backend.sessions.keep_distance_m
-  /// and keep_heading_deg).
+  /// Per session frame, whether it joins the merged map (map::framesThatAdd with backend.sessions.keep_distance_m,
+  /// keep_heading_deg and max_covering_sessions).
   std::vector<bool> kept;
   double ms = 0.0;  ///< the merge's time
 };
