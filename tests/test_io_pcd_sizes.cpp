@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -68,20 +69,28 @@ TEST_F(PcdIo, CompressedBombNeedsNoMoreThanAFewMegabytes) {
   // must end in sgtllc::Error, not std::bad_alloc (the 4 GiB the header claims was allocated before the fix).
   const std::string path = write("bomb.pcd", compressedBomb());
   GTEST_FLAG_SET(death_test_style, "threadsafe");
+  // The "threadsafe" child runs the test again from the start, SetUp and its own folder included, and exits without
+  // TearDown: it removes that folder itself, or every run would leave one in the temporary directory.
+  const auto leave = [this](int code) {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+    std::exit(code);
+  };
   EXPECT_EXIT(
       {
         rlimit limit{};
         getrlimit(RLIMIT_AS, &limit);
         limit.rlim_cur = size_t{1} << 30;
         setrlimit(RLIMIT_AS, &limit);
+        int code = 1;
         try {
           sgtllc::io::readPcd(path);
         } catch (const Error&) {
-          std::exit(0);
+          code = 0;
         } catch (...) {
-          std::exit(2);
+          code = 2;
         }
-        std::exit(1);
+        leave(code);
       },
       ::testing::ExitedWithCode(0), "");
 #endif
