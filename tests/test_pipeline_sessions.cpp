@@ -111,6 +111,12 @@ TEST(SessionPipeline, FramesTheMapHasAndRecognisesDoNotJoinIt) {
   EXPECT_EQ(merged.size(), 110 + added);
   EXPECT_EQ(merged.sessions.back().frames, added);
   for (int f = 110; f < merged.size(); ++f) EXPECT_EQ(merged.names[f].rfind("again/", 0), 0u);
+  // Each frame's drive, as the thinning rule counts them: the first map's frames are drive 0, the merged ones 1.
+  ASSERT_EQ(merged.sessions.size(), 2u);
+  const std::vector<int> drive = map::frameSessions(merged);
+  ASSERT_EQ(static_cast<int>(drive.size()), merged.size());
+  for (int f = 0; f < merged.size(); ++f) EXPECT_EQ(drive[f], f < 110 ? 0 : 1) << f;
+  EXPECT_EQ(map::frameSessions(firstMap(thin)), std::vector<int>(110, 0));  // no sessions listed: one drive
   // The same drive turned round: the map's frames face the other way, so every frame joins.
   const std::vector<Eigen::Matrix4d> map_poses = firstMap(thin).poses;
   const auto added_by = [&](bool turned, bool known, double distance) {
