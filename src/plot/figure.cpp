@@ -1,12 +1,12 @@
 #include "sgtllc/plot/figure.h"
 
-#include <cairo.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "cairo_library.h"
 #include "sgtllc/types.h"
 
 namespace sgtllc::plot {
@@ -44,11 +44,11 @@ std::string tickText(double v, double step) {
   return buf;
 }
 
-void setColor(cairo_t* cr, const Color& c) { cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a); }
+void setColor(cairo_t* cr, const Color& c) { cairo().set_source_rgba(cr, c.r, c.g, c.b, c.a); }
 
 double textWidth(cairo_t* cr, const std::string& s) {
   cairo_text_extents_t e;
-  cairo_text_extents(cr, s.c_str(), &e);
+  cairo().text_extents(cr, s.c_str(), &e);
   return e.x_advance;
 }
 
@@ -56,9 +56,9 @@ double textWidth(cairo_t* cr, const std::string& s) {
 /// top, middle or bottom of the font's box.
 void drawText(cairo_t* cr, const std::string& s, double x, double y, double ax, double ay) {
   cairo_font_extents_t f;
-  cairo_font_extents(cr, &f);
-  cairo_move_to(cr, x - ax * textWidth(cr, s), y + f.ascent - ay * (f.ascent + f.descent));
-  cairo_show_text(cr, s.c_str());
+  cairo().font_extents(cr, &f);
+  cairo().move_to(cr, x - ax * textWidth(cr, s), y + f.ascent - ay * (f.ascent + f.descent));
+  cairo().show_text(cr, s.c_str());
 }
 
 }  // namespace
@@ -111,7 +111,7 @@ namespace {
 
 void setDash(cairo_t* cr, bool dashed) {
   const double dash[] = {8.0, 5.0};
-  cairo_set_dash(cr, dash, dashed ? 2 : 0, 0);
+  cairo().set_dash(cr, dash, dashed ? 2 : 0, 0);
 }
 
 }  // namespace
@@ -137,10 +137,10 @@ void Figure::render(void* context, double ox, double oy) const {
   if (!xfixed_) { const double m = 0.03 * (x1 - x0); x0 -= m; x1 += m; }
   if (!yfixed_) { const double m = 0.03 * (y1 - y0); y0 -= m; y1 += m; }
 
-  cairo_save(cr);
-  cairo_translate(cr, ox, oy);
-  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, kFontSize);
+  cairo().save(cr);
+  cairo().translate(cr, ox, oy);
+  cairo().select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo().set_font_size(cr, kFontSize);
 
   // The legend lists what the plot shows: labelled items with data, and swatches.
   std::vector<const Item*> entries;
@@ -173,89 +173,89 @@ void Figure::render(void* context, double ox, double oy) const {
   // Grid and ticks.
   const double xs = niceStep(x0, x1, std::max(2, static_cast<int>(pw / 90))),
                ys = niceStep(y0, y1, std::max(2, static_cast<int>(ph / 60)));
-  cairo_set_line_width(cr, 1.0);
+  cairo().set_line_width(cr, 1.0);
   for (double v = std::ceil(x0 / xs) * xs; v <= x1 + 1e-9 * xs; v += xs) {
-    cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
-    cairo_move_to(cr, X(v), py);
-    cairo_line_to(cr, X(v), py + ph);
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
+    cairo().set_source_rgb(cr, 0.9, 0.9, 0.9);
+    cairo().move_to(cr, X(v), py);
+    cairo().line_to(cr, X(v), py + ph);
+    cairo().stroke(cr);
+    cairo().set_source_rgb(cr, 0.15, 0.15, 0.15);
     drawText(cr, tickText(v, xs), X(v), py + ph + 8, 0.5, 0.0);
   }
   for (double v = std::ceil(y0 / ys) * ys; v <= y1 + 1e-9 * ys; v += ys) {
-    cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
-    cairo_move_to(cr, px, Y(v));
-    cairo_line_to(cr, px + pw, Y(v));
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
+    cairo().set_source_rgb(cr, 0.9, 0.9, 0.9);
+    cairo().move_to(cr, px, Y(v));
+    cairo().line_to(cr, px + pw, Y(v));
+    cairo().stroke(cr);
+    cairo().set_source_rgb(cr, 0.15, 0.15, 0.15);
     drawText(cr, tickText(v, ys), px - 8, Y(v), 1.0, 0.5);
   }
 
   // Data, clipped to the plot area.
-  cairo_save(cr);
-  cairo_rectangle(cr, px, py, pw, ph);
-  cairo_clip(cr);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo().save(cr);
+  cairo().rectangle(cr, px, py, pw, ph);
+  cairo().clip(cr);
+  cairo().set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (const Item& it : items_) {
     switch (it.kind) {
       case Kind::kLine: {
         setColor(cr, it.color);
-        cairo_set_line_width(cr, it.size);
+        cairo().set_line_width(cr, it.size);
         setDash(cr, it.dashed);
         for (size_t k = 0; k < it.x.size(); ++k) {
-          if (k == 0) cairo_move_to(cr, X(it.x[k]), Y(it.y[k]));
-          else cairo_line_to(cr, X(it.x[k]), Y(it.y[k]));
+          if (k == 0) cairo().move_to(cr, X(it.x[k]), Y(it.y[k]));
+          else cairo().line_to(cr, X(it.x[k]), Y(it.y[k]));
         }
-        cairo_stroke(cr);
-        cairo_set_dash(cr, nullptr, 0, 0);
+        cairo().stroke(cr);
+        cairo().set_dash(cr, nullptr, 0, 0);
         break;
       }
       case Kind::kPoints:
       case Kind::kColoredPoints:
         for (size_t k = 0; k < it.x.size(); ++k) {
           setColor(cr, it.kind == Kind::kPoints ? it.color : it.colors[k]);
-          cairo_arc(cr, X(it.x[k]), Y(it.y[k]), it.size, 0, 2 * M_PI);
-          cairo_fill(cr);
+          cairo().arc(cr, X(it.x[k]), Y(it.y[k]), it.size, 0, 2 * M_PI);
+          cairo().fill(cr);
         }
         break;
       case Kind::kSegments:
         setColor(cr, it.color);
-        cairo_set_line_width(cr, it.size);
+        cairo().set_line_width(cr, it.size);
         for (const auto& s : it.segs) {
-          cairo_move_to(cr, X(s[0]), Y(s[1]));
-          cairo_line_to(cr, X(s[2]), Y(s[3]));
+          cairo().move_to(cr, X(s[0]), Y(s[1]));
+          cairo().line_to(cr, X(s[2]), Y(s[3]));
         }
-        cairo_stroke(cr);
+        cairo().stroke(cr);
         break;
       case Kind::kSwatch:
         break;
     }
   }
-  cairo_restore(cr);
+  cairo().restore(cr);
 
   // Frame, labels, title.
-  cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-  cairo_set_line_width(cr, 1.2);
-  cairo_rectangle(cr, px, py, pw, ph);
-  cairo_stroke(cr);
+  cairo().set_source_rgb(cr, 0.15, 0.15, 0.15);
+  cairo().set_line_width(cr, 1.2);
+  cairo().rectangle(cr, px, py, pw, ph);
+  cairo().stroke(cr);
   if (!xlabel_.empty()) drawText(cr, xlabel_, px + pw / 2, height_ - 22, 0.5, 0.5);
   if (!ylabel_.empty()) {
-    cairo_save(cr);
-    cairo_translate(cr, 20, py + ph / 2);
-    cairo_rotate(cr, -M_PI / 2);
+    cairo().save(cr);
+    cairo().translate(cr, 20, py + ph / 2);
+    cairo().rotate(cr, -M_PI / 2);
     drawText(cr, ylabel_, 0, 0, 0.5, 0.5);
-    cairo_restore(cr);
+    cairo().restore(cr);
   }
   if (!title_.empty()) {
-    cairo_set_font_size(cr, kTitleSize);
-    cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo().set_font_size(cr, kTitleSize);
+    cairo().select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
     drawText(cr, title_, px + pw / 2, 25, 0.5, 0.5);
-    cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, kFontSize);
+    cairo().select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo().set_font_size(cr, kFontSize);
   }
 
   if (!note_.empty()) {
-    cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+    cairo().set_source_rgb(cr, 0.35, 0.35, 0.35);
     drawText(cr, note_, px + pw / 2, py + ph / 2, 0.5, 0.5);
   }
 
@@ -265,12 +265,12 @@ void Figure::render(void* context, double ox, double oy) const {
     const bool at_bottom = legend_at_.find("lower") != std::string::npos;
     const double bx = outside ? px + pw + 15 : at_left ? px + 10 : px + pw - box_w - 10;
     const double by = at_bottom && !outside ? py + ph - box_h - 10 : py + (outside ? 0 : 10);
-    cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
-    cairo_rectangle(cr, bx, by, box_w, box_h);
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
-    cairo_set_line_width(cr, 1.0);
-    cairo_stroke(cr);
+    cairo().set_source_rgba(cr, 1, 1, 1, 0.9);
+    cairo().rectangle(cr, bx, by, box_w, box_h);
+    cairo().fill_preserve(cr);
+    cairo().set_source_rgb(cr, 0.6, 0.6, 0.6);
+    cairo().set_line_width(cr, 1.0);
+    cairo().stroke(cr);
     for (size_t k = 0; k < entries.size(); ++k) {
       const Item& it = *entries[k];
       const double cy = by + 5 + row * (k + 0.5);
@@ -278,21 +278,21 @@ void Figure::render(void* context, double ox, double oy) const {
       const bool as_line = it.kind == Kind::kLine || it.kind == Kind::kSegments ||
                            (it.kind == Kind::kSwatch && it.size > 0.5);
       if (as_line) {
-        cairo_set_line_width(cr, std::max(2.0, it.kind == Kind::kSwatch ? 2.0 : it.size));
+        cairo().set_line_width(cr, std::max(2.0, it.kind == Kind::kSwatch ? 2.0 : it.size));
         setDash(cr, it.dashed);
-        cairo_move_to(cr, bx + 8, cy);
-        cairo_line_to(cr, bx + 36, cy);
-        cairo_stroke(cr);
+        cairo().move_to(cr, bx + 8, cy);
+        cairo().line_to(cr, bx + 36, cy);
+        cairo().stroke(cr);
         setDash(cr, false);
       } else {
-        cairo_arc(cr, bx + 22, cy, 5, 0, 2 * M_PI);
-        cairo_fill(cr);
+        cairo().arc(cr, bx + 22, cy, 5, 0, 2 * M_PI);
+        cairo().fill(cr);
       }
-      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo().set_source_rgb(cr, 0.1, 0.1, 0.1);
       drawText(cr, it.label, bx + 44, cy, 0.0, 0.5);
     }
   }
-  cairo_restore(cr);
+  cairo().restore(cr);
 }
 
 }  // namespace sgtllc::plot

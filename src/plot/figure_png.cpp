@@ -1,9 +1,9 @@
 // Writing figures as PNG files: one figure, or several side by side (figure.h).
-#include <cairo.h>
 
 #include <algorithm>
 #include <memory>
 
+#include "cairo_library.h"
 #include "sgtllc/plot/figure.h"
 #include "sgtllc/types.h"
 
@@ -13,8 +13,8 @@ namespace {
 using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 
 void writePng(cairo_surface_t* surface, const std::string& path) {
-  cairo_surface_flush(surface);
-  if (cairo_surface_write_to_png(surface, path.c_str()) != CAIRO_STATUS_SUCCESS) {
+  cairo().surface_flush(surface);
+  if (cairo().surface_write_to_png(surface, path.c_str()) != CAIRO_STATUS_SUCCESS) {
     throw Error("cannot write " + path + " (PNG)");
   }
 }
@@ -22,10 +22,10 @@ void writePng(cairo_surface_t* surface, const std::string& path) {
 /// A white canvas of @p w × @p h pixels drawn by @p draw and written to @p path.
 template <typename Draw>
 void drawPng(const std::string& path, int w, int h, Draw&& draw) {
-  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h), cairo_surface_destroy);
-  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> ctx(cairo_create(surface.get()), cairo_destroy);
-  cairo_set_source_rgb(ctx.get(), 1, 1, 1);
-  cairo_paint(ctx.get());
+  Surface surface(cairo().image_surface_create(CAIRO_FORMAT_RGB24, w, h), cairo().surface_destroy);
+  std::unique_ptr<cairo_t, decltype(&cairo_destroy)> ctx(cairo().create(surface.get()), cairo().destroy);
+  cairo().set_source_rgb(ctx.get(), 1, 1, 1);
+  cairo().paint(ctx.get());
   draw(ctx.get());
   writePng(surface.get(), path);
 }
