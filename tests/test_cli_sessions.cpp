@@ -89,6 +89,23 @@ TEST_F(CliSessions, MergesASecondSessionIntoTheMapsFrame) {
   EXPECT_EQ(test::fileBytes(path("m2.sgtmap")), before);
 }
 
+TEST_F(CliSessions, ADriveTheMapHeldEverywhereAddsNoFrameAndIsListed) {
+  // The first drive again, with thinning on (the default): every frame is recognised beside a map frame, none is
+  // added, and `map info` lists the session with no frame range (it used to fail on the empty range).
+  std::ofstream(path("thin.yaml")) << "retrieval:\n  exclude_recent: 20\n";
+  const auto r = test::run("run --nodes " + path("s1/nodes") + " --odometry " + path("s1/odometry.txt") + " --calib " +
+                           path("s1/calib.txt") + " --config " + path("thin.yaml") + " --map " + path("m.sgtmap") +
+                           " --session-name again --save-map " + path("again.sgtmap"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto info = test::run("map info " + path("again.sgtmap"));
+  ASSERT_EQ(info.status, 0) << info.out;
+  EXPECT_NE(info.out.find("sessions 2:\n  m: 110 frames (000000 .. 000109)\n  again: 0 frames\n"), std::string::npos)
+      << info.out;
+  const auto json = test::run("map info " + path("again.sgtmap") + " --json");
+  ASSERT_EQ(json.status, 0) << json.out;
+  EXPECT_NE(json.out.find("\"frames\": 0"), std::string::npos) << json.out;
+}
+
 TEST_F(CliSessions, FalseInterSessionLoopsAreAllRejected) {
   // The robustness test of docs/sessions.md: false inter-session loops (a session frame tied to a map frame more
   // than 50 m from where it is, at a random pose) must all be rejected and leave the session where it was.

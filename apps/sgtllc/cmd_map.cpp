@@ -70,8 +70,10 @@ void mapInfo(const std::string& path, bool json) {
     // Merged drives (docs/sessions.md), in frame order.
     std::cout << "\nsessions " << m.sessions.size() << ":";
     for (const map::MapSession& s : m.sessions) {
-      std::cout << "\n  " << escapeContent(s.name, io::kNameBytes) << ": " << s.frames << " frames ("
-                << escapeContent(m.names.at(static_cast<size_t>(s.first)), io::kNameBytes) << " .. "
+      std::cout << "\n  " << escapeContent(s.name, io::kNameBytes) << ": " << s.frames << " frames";
+      // A drive the map already held everywhere adds no frame (docs/sessions.md, thinning): no range to name.
+      if (s.frames == 0) continue;
+      std::cout << " (" << escapeContent(m.names.at(static_cast<size_t>(s.first)), io::kNameBytes) << " .. "
                 << escapeContent(m.names.at(static_cast<size_t>(s.first + s.frames - 1)), io::kNameBytes) << ")";
     }
   }
