@@ -28,6 +28,9 @@ void enums(py::module_& m) {
   choiceEnum<CentreSource>(m, "CentreSource", "Where a node's centre comes from (cluster.centre).")
       .value("POINTS", CentreSource::kPoints, "mean of the cluster's original points (default)")
       .value("VOXELS", CentreSource::kVoxels, "mean of the cluster's voxel centroids (authors' code)");
+  choiceEnum<CentreHeight>(m, "CentreHeight", "The height of a node's centre (cluster.NAME.centre_height).")
+      .value("POINTS", CentreHeight::kPoints, "the mean height of the cluster's points")
+      .value("SENSOR", CentreHeight::kSensor, "0, the sensor's height: upright objects (pole, trunk, sign)");
   choiceEnum<SubVectorOrder>(m, "SubVectorOrder", "Order of a slot's three entries (descriptor.order).")
       .value("PAPER", SubVectorOrder::kPaper, "(a_i, a_j, a_k) (default)")
       .value("CODE", SubVectorOrder::kCode, "(a_i, a_k, -a_j), the authors' code");
@@ -77,8 +80,11 @@ void sections(py::module_& m) {
       .def("class_name", &LabelConfig::className, py::arg("c"), "name of class index c");
 
   settingsClass<ClassClusterConfig>(m, "ClassClusterConfig", "Per-class clustering (cluster.NAME.*).")
-      .def(py::init([](double voxel, double radius, int min_size) { return ClassClusterConfig{voxel, radius, min_size}; }),
-           py::arg("voxel") = 0.0, py::arg("radius") = 1.0, py::arg("min_size") = 20);
+      .def(py::init([](double voxel, double radius, int min_size, CentreHeight centre_height) {
+             return ClassClusterConfig{voxel, radius, min_size, centre_height};
+           }),
+           py::arg("voxel") = 0.0, py::arg("radius") = 1.0, py::arg("min_size") = 20,
+           py::arg("centre_height") = CentreHeight::kPoints);
   py::bind_vector<std::vector<ClassClusterConfig>>(m, "ClassClusterConfigList");
 
   settingsClass<ClusterConfig>(m, "ClusterConfig", "Clustering (cluster.*).")

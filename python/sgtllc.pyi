@@ -22,6 +22,8 @@ class LabelFormat(Enum):
     AUTO: int; UINT32: int; UINT8: int
 class CentreSource(Enum):
     POINTS: int; VOXELS: int
+class CentreHeight(Enum):
+    POINTS: int; SENSOR: int
 class SubVectorOrder(Enum):
     PAPER: int; CODE: int
 class GlobalMode(Enum):
@@ -60,7 +62,9 @@ class ClassClusterConfig:
     voxel: float
     radius: float
     min_size: int
-    def __init__(self, voxel: float = 0.0, radius: float = 1.0, min_size: int = 20) -> None: ...
+    centre_height: CentreHeight
+    def __init__(self, voxel: float = 0.0, radius: float = 1.0, min_size: int = 20,
+                 centre_height: CentreHeight = ...) -> None: ...
 class ClassClusterConfigList(MutableSequence[ClassClusterConfig]): ...
 class ClusterConfig:
     classes: ClassClusterConfigList

@@ -132,7 +132,9 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   for (int c = 0; c < num_classes_; ++c) {
     const size_t first_of_class = result.nodes.size();
     for (const Cluster& cluster : clusters[c]) {
-      const Eigen::Vector3d& centre = cluster.centre;
+      Eigen::Vector3d centre = cluster.centre;
+      // An upright object's node is where its axis crosses the sensor's horizontal plane (algorithm §2).
+      if (config_.classes[c].centre_height == CentreHeight::kSensor) centre.z() = 0.0;
       // Same-class duplicate suppression against the centres accepted so far (algorithm §2).
       bool duplicate = false;
       for (size_t k = first_of_class; k < result.nodes.size() && !duplicate; ++k) {

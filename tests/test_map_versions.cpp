@@ -22,8 +22,8 @@ namespace fs = std::filesystem;
 using map::MapError;
 using map::MapProblem;
 
-/// crc32 of the keys mapConfig() records in format version 4, one per line.
-constexpr uint32_t kVersion4KeysCrc = 2011781748u;
+/// crc32 of the keys mapConfig() records in format version 5, one per line.
+constexpr uint32_t kVersion5KeysCrc = 2721989332u;
 
 const std::string kV1Map = std::string(SGTLLC_DATA_DIR) + "/../tests/fixtures/map_v1_three_frames.sgtmap";
 
@@ -74,9 +74,9 @@ TEST_F(MapVersions, AMapOfAnOlderFormatVersionSaysSoAndHowToRebuildIt) {
 TEST_F(MapVersions, TheRecordedFieldsAreThoseOfThisFormatVersion) {
   std::string keys;
   for (const auto& [key, value] : map::mapConfig(Config{})) keys += key + "\n";
-  EXPECT_EQ(map::kFormatVersion, 4u);
+  EXPECT_EQ(map::kFormatVersion, 5u);
   EXPECT_NE(keys.find("\nlabeller.source\n"), std::string::npos) << keys;  // what version 1 lacked
-  EXPECT_EQ(crcOf(keys), kVersion4KeysCrc)
+  EXPECT_EQ(crcOf(keys), kVersion5KeysCrc)
       << "the fields a map records changed: raise map::kFormatVersion (docs/map-format.md, \"Versions\"), then "
          "record the new list's crc here. The fields now:\n"
       << keys;

@@ -52,6 +52,14 @@ Eigen::Vector3d mean(const Cloud& pts) {
   return s / static_cast<double>(pts.size());
 }
 
+/// The node of @p pts as class @p c: its points' mean, at the sensor's height for the upright classes (trunk, pole
+/// and traffic-sign by default; algorithm §2).
+Eigen::Vector3d nodeAt(const Cloud& pts, int c) {
+  Eigen::Vector3d m = mean(pts);
+  if (sgtllc::ClusterConfig{}.classes.at(c).centre_height == sgtllc::CentreHeight::kSensor) m.z() = 0.0;
+  return m;
+}
+
 const Eigen::Vector3f kX = Eigen::Vector3f::UnitX(), kY = Eigen::Vector3f::UnitY(), kZ = Eigen::Vector3f::UnitZ();
 
 sgtllc::NodeExtractionResult extract(const LabeledCloud& cloud, const sgtllc::ClusterConfig& config = {}) {
@@ -105,7 +113,7 @@ TEST(NodeExtractor, MinSizeCountsVoxelsOrPoints) {
   EXPECT_EQ(result.nodes[0].label, sgtllc::kBuilding);
   EXPECT_NEAR(result.nodes[0].centre.y(), 0.0, 1e-6);
   EXPECT_EQ(result.nodes[1].label, sgtllc::kPole);
-  EXPECT_LT((result.nodes[1].centre - mean(pole20)).norm(), 1e-9);
+  EXPECT_LT((result.nodes[1].centre - nodeAt(pole20, sgtllc::kPole)).norm(), 1e-9);
   EXPECT_EQ(result.stats.clusters[sgtllc::kBuilding], 1);
   EXPECT_EQ(result.stats.clusters[sgtllc::kPole], 1);
 }
@@ -125,10 +133,38 @@ TEST(NodeExtractor, NodeOrderIsClassOrder) {
   ASSERT_EQ(result.nodes.size(), 7u);
   for (int c = 0; c < sgtllc::kNumPaperClasses; ++c) {
     EXPECT_EQ(result.nodes[c].label, c);
-    EXPECT_LT((result.nodes[c].centre - mean(by_class[c])).norm(), 1e-9) << sgtllc::kClassNames[c];
+    EXPECT_LT((result.nodes[c].centre - nodeAt(by_class[c], c)).norm(), 1e-9) << sgtllc::kClassNames[c];
     EXPECT_EQ(result.stats.class_points[c], by_class[c].size());
     EXPECT_EQ(result.stats.clusters[c], 1);
   }
+}
+
+TEST(NodeExtractor, AnUprightObjectsNodeIsAtTheSensorsHeight) {
+  // One pole (x = 12, y = 3) seen over two stretches of its height, as from two places: 1.9 m of it from 1.5 m
+  // below the sensor, and 2.4 m of it from 0.5 m below (the foot behind a car, more of the top in view). By
+  // default the node is where its axis crosses the sensor's plane, the same in both; at its points' mean height
+  // (centre_height: points) the two nodes lie 1.25 m apart, beyond any inlier bound (algorithm §2).
+  const auto poleFrom = [](float bottom, int n) {
+    LabeledCloud cloud;
+    addRing(&cloud, 80, {12.0f, 3.0f, bottom}, 0.0f, n);
+    return cloud;
+  };
+  const LabeledCloud low = poleFrom(-1.5f, 20), high = poleFrom(-0.5f, 25);
+  const auto a = extract(low), b = extract(high);
+  ASSERT_EQ(a.nodes.size(), 1u);
+  ASSERT_EQ(b.nodes.size(), 1u);
+  EXPECT_LT((a.nodes[0].centre - Eigen::Vector3d(12.0, 3.0, 0.0)).norm(), 1e-6);
+  EXPECT_LT((b.nodes[0].centre - Eigen::Vector3d(12.0, 3.0, 0.0)).norm(), 1e-6);
+  sgtllc::ClusterConfig config;
+  config.classes[sgtllc::kPole].centre_height = sgtllc::CentreHeight::kPoints;
+  const auto pa = extract(low, config), pb = extract(high, config);
+  EXPECT_NEAR(pa.nodes[0].centre.z(), -1.5 + 0.95, 1e-6);  // 20 points 0.1 m apart from −1.5 m
+  EXPECT_NEAR(pb.nodes[0].centre.z(), -0.5 + 1.2, 1e-6);   // 25 from −0.5 m
+  EXPECT_NEAR((pa.nodes[0].centre - pb.nodes[0].centre).norm(), 1.25, 1e-6);
+  // Any class may be set so; the other classes' defaults keep their height.
+  EXPECT_EQ(sgtllc::ClusterConfig{}.classes[sgtllc::kBuilding].centre_height, sgtllc::CentreHeight::kPoints);
+  EXPECT_EQ(sgtllc::ClusterConfig{}.classes[sgtllc::kTrunk].centre_height, sgtllc::CentreHeight::kSensor);
+  EXPECT_EQ(sgtllc::ClusterConfig{}.classes[sgtllc::kTrafficSign].centre_height, sgtllc::CentreHeight::kSensor);
 }
 
 TEST(NodeExtractor, CentreSourcePointsOrVoxels) {
@@ -168,9 +204,9 @@ TEST(NodeExtractor, SameClassDuplicatesSuppressed) {
   const auto result = extract(cloud);
   ASSERT_EQ(result.nodes.size(), 2u);
   EXPECT_EQ(result.nodes[0].label, sgtllc::kTrunk);
-  EXPECT_LT((result.nodes[0].centre - mean(inner)).norm(), 1e-9);
+  EXPECT_LT((result.nodes[0].centre - nodeAt(inner, sgtllc::kTrunk)).norm(), 1e-9);
   EXPECT_EQ(result.nodes[1].label, sgtllc::kPole);
-  EXPECT_LT((result.nodes[1].centre - mean(pole)).norm(), 1e-9);
+  EXPECT_LT((result.nodes[1].centre - nodeAt(pole, sgtllc::kPole)).norm(), 1e-9);
   EXPECT_EQ(result.stats.clusters[sgtllc::kTrunk], 2);
   EXPECT_EQ(result.stats.duplicates_suppressed, 1);
 }
@@ -183,12 +219,12 @@ TEST(NodeExtractor, DuplicateRadiusIsConfigurable) {
   sgtllc::ClusterConfig config;
   const auto suppressed = extract(cloud, config);  // duplicate_radius 1.0 m
   ASSERT_EQ(suppressed.nodes.size(), 1u);
-  EXPECT_LT((suppressed.nodes[0].centre - mean(inner)).norm(), 1e-9);
+  EXPECT_LT((suppressed.nodes[0].centre - nodeAt(inner, sgtllc::kTrunk)).norm(), 1e-9);
   EXPECT_EQ(suppressed.stats.duplicates_suppressed, 1);
   config.duplicate_radius = 0.5;
   const auto kept = extract(cloud, config);
   ASSERT_EQ(kept.nodes.size(), 2u);
-  EXPECT_LT((kept.nodes[1].centre - mean(outer)).norm(), 1e-9);
+  EXPECT_LT((kept.nodes[1].centre - nodeAt(outer, sgtllc::kTrunk)).norm(), 1e-9);
   EXPECT_EQ(kept.stats.duplicates_suppressed, 0);
 }
 
@@ -208,12 +244,12 @@ TEST(NodeExtractor, MaxNodesKeepsTheClustersWithTheMostPoints) {
   ASSERT_EQ(capped.nodes.size(), 3u);
   EXPECT_EQ(capped.stats.capped_nodes, 2);
   EXPECT_LT((capped.nodes[0].centre - mean(fence)).norm(), 1e-9);
-  EXPECT_LT((capped.nodes[1].centre - mean(p50a)).norm(), 1e-9);
-  EXPECT_LT((capped.nodes[2].centre - mean(p50b)).norm(), 1e-9);
+  EXPECT_LT((capped.nodes[1].centre - nodeAt(p50a, sgtllc::kPole)).norm(), 1e-9);
+  EXPECT_LT((capped.nodes[2].centre - nodeAt(p50b, sgtllc::kPole)).norm(), 1e-9);
   // A tie at the cut goes to the earlier node: of the two 50-point poles, max_nodes = 2 keeps the first.
   const auto two = NodeExtractor({}, {}, 2).extract(cloud);
   ASSERT_EQ(two.nodes.size(), 2u);
-  EXPECT_LT((two.nodes[1].centre - mean(p50a)).norm(), 1e-9);
+  EXPECT_LT((two.nodes[1].centre - nodeAt(p50a, sgtllc::kPole)).norm(), 1e-9);
   EXPECT_EQ(NodeExtractor({}, {}, 0).extract(cloud).nodes.size(), 5u);  // 0 = no limit
 }
 

@@ -81,6 +81,16 @@ enum class CentreSource {
   kVoxels,  ///< mean of the cluster's voxel centroids, as the authors' code (pcl::compute3DCentroid on voxels)
 };
 
+/// The height of a node's centre (algorithm §2, "Upright objects").
+enum class CentreHeight {
+  kPoints,  ///< the mean height of the cluster's points
+  /// 0, the sensor's height: the node is where the object's vertical axis crosses the sensor's horizontal plane.
+  /// For poles and trunks, whose points' mean height moves with the part of them in view (the beams that reach
+  /// them, the cars in front), so that a revisit from farther or nearer finds it again (BENCHMARKS.md, "Upright
+  /// objects at the sensor's height").
+  kSensor,
+};
+
 /// Per-class clustering parameters (algorithm §2 table).
 struct ClassClusterConfig {
   /// Voxel leaf (m); 0 = no downsampling. 0 or [0.001, 10]: the lower bound keeps the cells of points within
@@ -88,6 +98,7 @@ struct ClassClusterConfig {
   double voxel = 0.0;
   double radius = 1.0;  ///< FEC radius r (m)
   int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points
+  CentreHeight centre_height = CentreHeight::kPoints;  ///< the height of the node's centre
 };
 
 struct ClusterConfig {
@@ -97,10 +108,10 @@ struct ClusterConfig {
       {0.4, 1.0, 200},  // building
       {0.4, 1.0, 20},   // fence
       {0.4, 1.0, 150},  // vegetation
-      {0.0, 1.0, 20},   // trunk
-      {0.4, 1.0, 150},  // terrain
-      {0.0, 1.0, 20},   // pole
-      {0.0, 1.0, 20},   // traffic-sign
+      {0.0, 1.0, 20, CentreHeight::kSensor},  // trunk
+      {0.4, 1.0, 150},                         // terrain
+      {0.0, 1.0, 20, CentreHeight::kSensor},  // pole
+      {0.0, 1.0, 20, CentreHeight::kSensor},  // traffic-sign
   };
   int max_neighbors = 100;         ///< FEC cap on neighbours per radius query, seed included (algorithm §2)
   /// Skip a cluster whose centre is this close (m, 3-D) to an accepted same-class one (algorithm §2).

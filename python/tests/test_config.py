@@ -36,12 +36,18 @@ def test_yaml_round_trip(tmp_path):
     c.verification.sigma_4 = 0.25
     c.descriptor.global_mode = sgtllc.GlobalMode.G3
     c.add_class(sgtllc.ExtraClass("vehicle", [10, 252]), sgtllc.ClassClusterConfig(0.4, 1.0, 100))
+    # Upright objects' nodes at the sensor's height (algorithm §2): poles by default, any class when set.
+    assert c.cluster.classes[5].centre_height == sgtllc.CentreHeight.SENSOR
+    assert c.cluster.classes[0].centre_height == sgtllc.CentreHeight.POINTS
+    c.cluster.classes[0].centre_height = sgtllc.CentreHeight.SENSOR
     path = tmp_path / "c.yaml"
     path.write_text(c.to_yaml())
     back = sgtllc.Config.from_yaml(str(path))
     assert back == c and back.num_classes() == 8
     assert back.labels.extra_classes[0].ids == (10, 252) and back.labels.class_name(7) == "vehicle"
     assert back.verification.sigma_4 == 0.25 and back.cluster.classes[7].min_size == 100
+    assert back.cluster.classes[0].centre_height == sgtllc.CentreHeight.SENSOR
+    assert "centre_height: sensor" in c.to_yaml().split("fence:")[0]
     assert sgtllc.Config.from_yaml_string(c.to_yaml()) == c
 
 

@@ -36,6 +36,9 @@ void addClusterSettings(const LabelConfig& labels, std::vector<Setting>* out) {
     c.number("radius", &ClassClusterConfig::radius, "[0.001, 10]", "m", "FEC radius r");
     c.number("min_size", &ClassClusterConfig::min_size, "[1, 1000000]", "",
              "minimum cluster size (voxels if voxel > 0, else points)");
+    c.choice("centre_height", &ClassClusterConfig::centre_height,
+             {{"points", CentreHeight::kPoints}, {"sensor", CentreHeight::kSensor}},
+             "node centre's height: its points' mean, or the sensor's (z = 0; upright objects)");
   }
   SectionTable<ClusterConfig> c("cluster", [](Config& config) -> ClusterConfig& { return config.cluster; }, out);
   c.number("max_neighbors", &ClusterConfig::max_neighbors, "[1, 10000]", "",

@@ -16,7 +16,7 @@ namespace sgtllc::map {
 /// whenever what a map records changes, including the configuration fields mapConfig() stores. Older maps (1:
 /// before labeller.* was recorded; 2: before labeller.segments.pole_max_occluded) are refused as
 /// MapProblem::kOlderVersion.
-inline constexpr uint32_t kFormatVersion = 4;
+inline constexpr uint32_t kFormatVersion = 5;
 
 /// One section of a map file as found by decodeMap.
 struct SectionInfo {
