@@ -161,7 +161,7 @@ TEST(NodeExtractor, AnUprightObjectsNodeIsAtTheSensorsHeight) {
   EXPECT_NEAR(pa.nodes[0].centre.z(), -1.5 + 0.95, 1e-6);  // 20 points 0.1 m apart from −1.5 m
   EXPECT_NEAR(pb.nodes[0].centre.z(), -0.5 + 1.2, 1e-6);   // 25 from −0.5 m
   EXPECT_NEAR((pa.nodes[0].centre - pb.nodes[0].centre).norm(), 1.25, 1e-6);
-  // Any class may be set so; the other classes' defaults keep their height.
+  // The defaults: the upright classes at the sensor's height, the others at their points' mean.
   EXPECT_EQ(sgtllc::ClusterConfig{}.classes[sgtllc::kBuilding].centre_height, sgtllc::CentreHeight::kPoints);
   EXPECT_EQ(sgtllc::ClusterConfig{}.classes[sgtllc::kTrunk].centre_height, sgtllc::CentreHeight::kSensor);
   EXPECT_EQ(sgtllc::ClusterConfig{}.classes[sgtllc::kTrafficSign].centre_height, sgtllc::CentreHeight::kSensor);
