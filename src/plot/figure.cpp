@@ -1,6 +1,5 @@
 #include "sgtllc/plot/figure.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

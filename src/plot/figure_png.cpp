@@ -1,5 +1,4 @@
 // Writing figures as PNG files: one figure, or several side by side (figure.h).
-
 #include <algorithm>
 #include <memory>
 

@@ -13,9 +13,8 @@
 namespace sgtllc::map {
 
 /// The format version this sgtllc writes and the only one it reads (docs/map-format.md, "Versions"): it rises
-/// whenever what a map records changes, including the configuration fields mapConfig() stores. Older maps (1:
-/// before labeller.* was recorded; 2: before labeller.segments.pole_max_occluded) are refused as
-/// MapProblem::kOlderVersion.
+/// whenever what a map records changes, including the configuration fields mapConfig() stores. Older maps (what each
+/// version lacked: that table) are refused as MapProblem::kOlderVersion.
 inline constexpr uint32_t kFormatVersion = 5;
 
 /// One section of a map file as found by decodeMap.
