@@ -27,7 +27,7 @@ for f in 0 1 2; do
   awk -v f="$f" 'BEGIN { split("50 51 70 71 72 80 81", id); for (k = 0; k < 10; ++k) printf "%.3f %.3f %.3f %d\n", 3 * k - 12 + f, (k * k * 7) % 11 - 5, 0.5 * (k % 3), id[k % 7 + 1] }' \
     > "$work/spread/00000$f.txt"
 done
-printf 'backend:\n  sessions:\n    min_inter_loops: 1\n' > "$work/one.yaml"
+printf 'backend:\n  sessions:\n    min_inter_loops: 1\n    keep_distance_m: 0\n' > "$work/one.yaml"
 "$cli" run --nodes "$work/spread" --odometry "$work/poses.txt" --calib "$work/calib.txt" --save-map "$work/spread.sgtmap" \
   > /dev/null 2>&1
 "$cli" run --nodes "$work/spread" --odometry "$work/poses.txt" --calib "$work/calib.txt" --config "$work/one.yaml" \

@@ -71,7 +71,7 @@ void expectTheScenesPose(const std::string& out) {
 
 TEST(CliNuScenes, LabelFreePairVerifies) {
   // From the scans alone, with the config (poles and trunks of 15 points, their nodes at the sensor's height), the
-  // two keyframes have 6 and 5 nodes; the descriptors' pairs hold no rigid set of 3 (the next test), but 4 of the
+  // two keyframes have 6 and 5 nodes; the descriptors' 5 pairs hold no rigid set of 3 (checked last), but 4 of the
   // nodes agree in their distances: the consistency path (algorithm §7.8) verifies them at the scene's own pose.
   const std::string pair = "pair " + kScene + "velodyne/000001.bin " + kScene + "velodyne/000000.bin --labeller geometric";
   const CliRun r = run(pair + " --config " + kConfig);
@@ -82,6 +82,15 @@ TEST(CliNuScenes, LabelFreePairVerifies) {
   EXPECT_NE(r.out.find("associations 4, inliers 4   (pairs chosen by geometric consistency"), std::string::npos)
       << r.out;
   expectTheScenesPose(r.out);
+
+  const std::string without = testing::TempDir() + "/nuscenes_without_consistency.yaml";
+  {
+    std::ifstream config(kConfig);
+    std::ofstream(without) << config.rdbuf() << "verification:\n  consistency_pairs: 0\n";
+  }
+  const CliRun paper = run(pair + " --config " + without);
+  ASSERT_EQ(paper.status, 0) << paper.out;
+  EXPECT_NE(paper.out.find("associations 5, inliers 0   (rejected: ransac_failed)"), std::string::npos) << paper.out;
 }
 
 TEST(CliNuScenes, LabelFreePairVerifiesByConsistency) {
