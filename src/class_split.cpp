@@ -44,8 +44,9 @@ void addCounts(ExtractionStats& to, const ExtractionStats& from) {
 }  // namespace
 
 ClassSplit::ClassSplit(const LabeledCloud& cloud, const LabelMap& labels, const ClusterConfig& cluster, int threads,
-                       ExtractionStats& stats)
+                       ExtractionStats& stats, const FootprintMarker* footprint)
     : chunks_(kSplitChunks) {
+  if (footprint && !footprint->enabled()) footprint = nullptr;
   const size_t n = cloud.points.size();
   const size_t classes = cluster.classes.size();
   const size_t expected = n / (classes * kSplitChunks) + 16;  // points per class and range, if spread evenly
@@ -57,6 +58,7 @@ ClassSplit::ClassSplit(const LabeledCloud& cloud, const LabelMap& labels, const 
       if (leaf > 0.0) chunk.voxels[c].emplace(leaf, expected);
       if (leaf >= kMinFastLeaf) chunk.bounded[c] = &*chunk.voxels[c];
     }
+    if (footprint) chunk.footprint = footprint->grid().bits;
   }
   std::array<std::exception_ptr, kSplitChunks> errors;
   parallelFor(kSplitChunks, threads, [&](int k) {
@@ -64,9 +66,9 @@ ClassSplit::ClassSplit(const LabeledCloud& cloud, const LabelMap& labels, const 
     const size_t end = n * static_cast<size_t>(k + 1) / kSplitChunks;
     try {
       if (allWithinBounds(cloud.points, begin, end)) {
-        split<false>(cloud, labels, begin, end, chunks_[k]);
+        split<false>(cloud, labels, begin, end, footprint, chunks_[k]);
       } else {
-        split<true>(cloud, labels, begin, end, chunks_[k]);
+        split<true>(cloud, labels, begin, end, footprint, chunks_[k]);
       }
     } catch (...) {
       errors[k] = std::current_exception();  // out of memory; rethrown on the caller's thread
@@ -79,8 +81,11 @@ ClassSplit::ClassSplit(const LabeledCloud& cloud, const LabelMap& labels, const 
 }
 
 /// Points [begin, end) into @p chunk's sinks, in scan order. kCheck: test each point's bounds (allWithinBounds failed).
+/// With @p footprint, each point also sets its footprint cell, as computeFootprint would: the footprint reads x and
+/// y only, so a point the split drops for a bad z still sets its cell.
 template <bool kCheck>
-void ClassSplit::split(const LabeledCloud& cloud, const LabelMap& labels, size_t begin, size_t end, Chunk& chunk) {
+void ClassSplit::split(const LabeledCloud& cloud, const LabelMap& labels, size_t begin, size_t end,
+                       const FootprintMarker* footprint, Chunk& chunk) {
   const Eigen::Vector3f* points = cloud.points.data();
   const uint32_t* ids = cloud.labels.data();
   ExtractionStats& stats = chunk.stats;
@@ -89,6 +94,7 @@ void ClassSplit::split(const LabeledCloud& cloud, const LabelMap& labels, size_t
     if (kCheck && !(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate &&
                     std::abs(p.z()) <= kMaxCoordinate)) {
       ++(p.allFinite() ? stats.far_points : stats.nonfinite_points);
+      if (footprint) footprint->mark(p, labels.classOf(ids[i]), chunk.footprint);
       continue;
     }
     const int8_t c = labels.classOf(ids[i]);  // an id with a class is known (LabelMap)
@@ -96,6 +102,7 @@ void ClassSplit::split(const LabeledCloud& cloud, const LabelMap& labels, size_t
       if (!labels.isKnown(ids[i])) ++stats.unknown_label_points;
       continue;
     }
+    if (footprint) footprint->mark(p, c, chunk.footprint);
     ++stats.class_points[c];
     if (chunk.bounded[c]) {
       chunk.bounded[c]->addBounded(p);
@@ -104,6 +111,12 @@ void ClassSplit::split(const LabeledCloud& cloud, const LabelMap& labels, size_t
     } else {
       chunk.points[c].push_back(p);
     }
+  }
+}
+
+void ClassSplit::footprint(Footprint* f) const {
+  for (const Chunk& chunk : chunks_) {
+    for (size_t w = 0; w < chunk.footprint.size() && w < f->bits.size(); ++w) f->bits[w] |= chunk.footprint[w];
   }
 }
 

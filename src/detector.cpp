@@ -82,7 +82,8 @@ int LoopDetector::firstSearchedFrame() const {
 FrameResult LoopDetector::process(const LabeledCloud& cloud) {
   FrameResult result;
   const auto start = Clock::now();
-  NodeExtractionResult extracted = extractor_.extract(cloud);
+  Footprint footprint;
+  NodeExtractionResult extracted = extractor_.extract(cloud, config_.verification, &footprint);
   result.timing.extraction_ms = msSince(start);
   result.extraction = extracted.stats;
   const auto refine_start = Clock::now();
@@ -90,7 +91,7 @@ FrameResult LoopDetector::process(const LabeledCloud& cloud) {
   const double prepare_ms = msSince(refine_start);
   const ExtractionStats stats = result.extraction;
   const double extraction_ms = result.timing.extraction_ms;
-  result = process(std::move(extracted.nodes), std::move(clouds), footprint(cloud));
+  result = process(std::move(extracted.nodes), std::move(clouds), std::move(footprint));
   result.extraction = stats;
   result.timing.extraction_ms = extraction_ms;
   result.timing.refinement_ms += prepare_ms;
@@ -236,13 +237,13 @@ PairResult comparePair(const LabeledCloud& query, const LabeledCloud& match, con
   config.validate();
   const NodeExtractor extractor(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes, config.threads);
   const auto start = Clock::now();
-  NodeExtractionResult q = extractor.extract(query);
-  NodeExtractionResult m = extractor.extract(match);
+  Footprint query_footprint, match_footprint;
+  NodeExtractionResult q = extractor.extract(query, config.verification, &query_footprint);
+  NodeExtractionResult m = extractor.extract(match, config.verification, &match_footprint);
   const double extraction_ms = msSince(start);
   const LabelMap& labels = extractor.labelMap();
-  PairResult result = comparePair(std::move(q.nodes), std::move(m.nodes), config,
-                                  computeFootprint(query, labels, config.verification),
-                                  computeFootprint(match, labels, config.verification));
+  PairResult result = comparePair(std::move(q.nodes), std::move(m.nodes), config, std::move(query_footprint),
+                                  std::move(match_footprint));
   result.extraction_query = q.stats;
   result.extraction_match = m.stats;
   result.timing.extraction_ms = extraction_ms;

@@ -17,29 +17,35 @@ bool Footprint::occupied(int i, int j) const {
   return (bits[k >> 6] >> (k & 63u)) & 1u;
 }
 
-Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, const VerificationConfig& config) {
+FootprintMarker::FootprintMarker(const VerificationConfig& config) {
+  if (config.min_footprint_overlap <= 0.0) return;
+  enabled_ = true;
+  cell_ = static_cast<float>(config.footprint_cell);
+  half_ = static_cast<int>(std::ceil(config.footprint_radius / config.footprint_cell));
+  r2_ = static_cast<float>(config.footprint_radius * config.footprint_radius);
+}
+
+Footprint FootprintMarker::grid() const {
   Footprint f;
-  if (config.min_footprint_overlap <= 0.0) return f;
-  f.cell = static_cast<float>(config.footprint_cell);
-  f.half = static_cast<int>(std::ceil(config.footprint_radius / config.footprint_cell));
-  const int side = 2 * f.half;
-  f.bits.assign(Footprint::words(f.half), 0);
-  const float r2 = static_cast<float>(config.footprint_radius * config.footprint_radius);
-  const size_t n = std::min(cloud.points.size(), cloud.labels.size());
-  for (size_t p = 0; p < n; ++p) {
-    const int c = labels.classOf(cloud.labels[p]);
-    // Terrain is ground: its cells say only that there is ground, which two different streets share.
-    if (c < 0 || c == kTerrain) continue;
-    const Eigen::Vector3f& q = cloud.points[p];
-    if (!(q.x() * q.x() + q.y() * q.y() < r2)) continue;  // also drops NaN
-    const int i = static_cast<int>(std::floor(q.x() / f.cell)) + f.half;
-    const int j = static_cast<int>(std::floor(q.y() / f.cell)) + f.half;
-    if (i < 0 || j < 0 || i >= side || j >= side) continue;
-    const size_t k = static_cast<size_t>(i) * static_cast<size_t>(side) + static_cast<size_t>(j);
-    f.bits[k >> 6] |= uint64_t{1} << (k & 63u);
-  }
+  if (!enabled_) return f;
+  f.cell = cell_;
+  f.half = half_;
+  f.bits.assign(Footprint::words(half_), 0);
+  return f;
+}
+
+void finishFootprint(const std::vector<Eigen::Vector3f>& points, const VerificationConfig& config, Footprint* f) {
   // Off, the check costs nothing: a second pass over the points is about a tenth of a frame's time online.
-  if (config.max_seen_through < 1.0) f.sight = computeSight(cloud.points);
+  if (!f->empty() && config.max_seen_through < 1.0) f->sight = computeSight(points);
+}
+
+Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, const VerificationConfig& config) {
+  const FootprintMarker marker(config);
+  Footprint f = marker.grid();
+  if (f.empty()) return f;
+  const size_t n = std::min(cloud.points.size(), cloud.labels.size());
+  for (size_t p = 0; p < n; ++p) marker.mark(cloud.points[p], labels.classOf(cloud.labels[p]), f.bits);
+  finishFootprint(cloud.points, config, &f);
   return f;
 }
 

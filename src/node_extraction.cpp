@@ -91,6 +91,19 @@ NodeExtractor::NodeExtractor(const ClusterConfig& cluster, const LabelConfig& la
 }
 
 NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
+  return extract(cloud, nullptr, nullptr);
+}
+
+NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud, const VerificationConfig& verification,
+                                            Footprint* footprint) const {
+  const FootprintMarker marker(verification);
+  NodeExtractionResult result = extract(cloud, &marker, footprint);
+  if (footprint) finishFootprint(cloud.points, verification, footprint);
+  return result;
+}
+
+NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud, const FootprintMarker* marker,
+                                            Footprint* footprint) const {
   if (cloud.points.size() != cloud.labels.size()) {
     throw Error("labelled cloud has " + std::to_string(cloud.points.size()) + " points but " +
                 std::to_string(cloud.labels.size()) + " labels");
@@ -99,7 +112,11 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
   ExtractionStats& stats = result.stats;
   stats.input_points = cloud.points.size();
 
-  internal::ClassSplit split(cloud, label_map_, config_, threads_, stats);
+  internal::ClassSplit split(cloud, label_map_, config_, threads_, stats, marker);
+  if (footprint) {
+    *footprint = marker ? marker->grid() : Footprint{};
+    split.footprint(footprint);
+  }
 
   // Classes are clustered independently (algorithm §2), so they run in parallel, the largest first, each joining its
   // ranges of the split first; each writes only its own slot and the merge below is in class order, so the nodes

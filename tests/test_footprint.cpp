@@ -10,6 +10,7 @@
 
 #include "sgtllc/detector.h"
 #include "sgtllc/footprint.h"
+#include "sgtllc/node_extraction.h"
 #include "test_kitti_support.h"
 
 namespace sgtllc {
@@ -56,6 +57,59 @@ TEST(Footprint, StructureCellsAreSetAndGroundTerrainAndFarPointsAreNot) {
   VerificationConfig off = defaults();
   off.min_footprint_overlap = 0.0;
   EXPECT_TRUE(computeFootprint(cloud, labels, off).empty());
+}
+
+void expectSameFootprint(const Footprint& a, const Footprint& b) {
+  EXPECT_EQ(a.cell, b.cell);
+  EXPECT_EQ(a.half, b.half);
+  EXPECT_EQ(a.bits, b.bits);
+  EXPECT_EQ(a.sight.low, b.sight.low);
+  EXPECT_EQ(a.sight.high, b.sight.high);
+}
+
+// Node extraction sets the footprint's cells in its own pass over the points (FootprintMarker); it must be
+// computeFootprint's footprint, bit for bit: on a real scan, at both thread counts, with the sight on, and on a
+// scan whose bad points send the split down its checked path (a NaN z still sets its cell: the footprint reads x
+// and y only; a point beyond the coordinate bound sets none).
+TEST(Footprint, NodeExtractionsPassGivesComputeFootprintsCells) {
+  LabeledCloud scan = test::kittiScan("004501");
+  size_t structure = 0;
+  for (const uint32_t id : scan.labels) structure += (id & 0xFFFFu) == kBuildingId;
+  ASSERT_GT(structure, 10000u);
+  VerificationConfig seen = defaults();
+  seen.max_seen_through = 0.5;
+  for (const VerificationConfig& config : {defaults(), seen}) {
+    for (int threads : {1, 2}) {
+      const NodeExtractor extractor(ClusterConfig{}, LabelConfig{}, GraphConfig{}.max_nodes, threads);
+      Footprint f;
+      const NodeExtractionResult with = extractor.extract(scan, config, &f);
+      const Footprint reference = computeFootprint(scan, extractor.labelMap(), config);
+      ASSERT_FALSE(reference.empty());
+      expectSameFootprint(f, reference);
+      EXPECT_EQ(f.sight.low.empty(), config.max_seen_through >= 1.0);
+      EXPECT_EQ(with.nodes.size(), extractor.extract(scan).nodes.size());
+    }
+  }
+  // Bad points in the first half of the scan, so one range of the split checks every point. The sensor's own
+  // cell holds no return of a real scan.
+  ASSERT_FALSE(computeFootprint(scan, LabelMap{LabelConfig{}}, defaults()).occupied(80, 80));
+  scan.points[10] = {0.2f, 0.3f, NAN};     // a structure point with a bad z: its cell is set
+  scan.labels[10] = kBuildingId;
+  scan.points[11] = {2.0e6f, 0.0f, 0.0f};  // beyond the coordinate bound: nothing
+  scan.labels[11] = kBuildingId;
+  scan.points[12] = {NAN, 1.0f, 0.0f};     // a bad x: nothing
+  scan.labels[12] = kBuildingId;
+  const NodeExtractor extractor(ClusterConfig{}, LabelConfig{});
+  Footprint f;
+  extractor.extract(scan, defaults(), &f);
+  const Footprint reference = computeFootprint(scan, extractor.labelMap(), defaults());
+  expectSameFootprint(f, reference);
+  EXPECT_TRUE(f.occupied(80, 80));  // (0.2, 0.3): cell [0, 0.5) × [0, 0.5)
+  // Off, the extraction leaves it empty.
+  VerificationConfig off = defaults();
+  off.min_footprint_overlap = 0.0;
+  extractor.extract(scan, off, &f);
+  EXPECT_TRUE(f.empty());
 }
 
 /// The overlap by its definition, over a set of cells, for comparison.

@@ -223,9 +223,8 @@ void runPair(const PairOptions& o) {
   const LabelMap labels(effectiveLabelConfig(config));
   // Node files carry no points: no footprint check, and the SVD pose stands.
   const bool scans = !q.from_node_file && !mt.from_node_file;
-  PairResult r = comparePair(q.nodes, mt.nodes, config,
-                             scans ? computeFootprint(q.cloud, labels, config.verification) : Footprint{},
-                             scans ? computeFootprint(mt.cloud, labels, config.verification) : Footprint{});
+  PairResult r = comparePair(q.nodes, mt.nodes, config, scans ? std::move(q.footprint) : Footprint{},
+                             scans ? std::move(mt.footprint) : Footprint{});
   r.extraction_query = q.stats;
   r.extraction_match = mt.stats;
   r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;

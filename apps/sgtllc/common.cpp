@@ -113,7 +113,8 @@ FrameNodes loadFrameNodes(const std::string& path, const std::string& label_path
   f.points = cloud.points.size();
   f.load_ms = msSince(start);
   start = std::chrono::steady_clock::now();
-  NodeExtractionResult extracted = NodeExtractor(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes).extract(cloud);
+  NodeExtractionResult extracted = NodeExtractor(config.cluster, effectiveLabelConfig(config), config.graph.max_nodes)
+                                       .extract(cloud, config.verification, &f.footprint);
   f.extraction_ms = msSince(start);
   f.nodes = std::move(extracted.nodes);
   f.stats = extracted.stats;

@@ -53,6 +53,7 @@ struct FrameNodes {
   size_t points = 0;            ///< points of the scan (0 for a node file)
   /// The scan, kept for the fine registration when registration.pair is on (empty for a node file)
   LabeledCloud cloud;
+  Footprint footprint;          ///< the scan's footprint (empty for a node file), from the extraction's pass
   ExtractionStats stats;        ///< point bookkeeping (a node file's unknown ids count as unknown_label_points)
   double load_ms = 0.0;
   double extraction_ms = 0.0;

@@ -3,6 +3,7 @@
 ///        under a verified pose (docs/algorithm.md §7.7).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,8 +40,41 @@ struct Footprint {
 };
 
 /// The footprint of a labelled scan (points in the sensor frame, ids read through @p labels); empty when
-/// verification.min_footprint_overlap is 0. A pure function of its inputs.
+/// verification.min_footprint_overlap is 0. A pure function of its inputs. NodeExtractor::extract gives the same
+/// footprint from its own pass over the points.
 Footprint computeFootprint(const LabeledCloud& cloud, const LabelMap& labels, const VerificationConfig& config);
+
+/// Sets a footprint's cells point by point: what computeFootprint does for each point, for a pass over the points
+/// that does more than that (node extraction's class split), so that a scan is read once.
+class FootprintMarker {
+ public:
+  /// The grid of @p config; enabled() is false when verification.min_footprint_overlap is 0.
+  explicit FootprintMarker(const VerificationConfig& config);
+  bool enabled() const { return enabled_; }
+  /// An empty footprint of this grid (no cell set; the sight not yet computed); an empty Footprint if !enabled().
+  Footprint grid() const;
+  /// Sets the cell of point @p q of stable class @p c in @p bits (Footprint::bits of grid()): terrain, points beyond
+  /// the radius and points with a non-finite x or y set nothing.
+  void mark(const Eigen::Vector3f& q, int c, std::vector<uint64_t>& bits) const {
+    // Terrain is ground: its cells say only that there is ground, which two different streets share.
+    if (c < 0 || c == kTerrain) return;
+    if (!(q.x() * q.x() + q.y() * q.y() < r2_)) return;  // also drops NaN
+    const int i = static_cast<int>(std::floor(q.x() / cell_)) + half_;
+    const int j = static_cast<int>(std::floor(q.y() / cell_)) + half_;
+    if (i < 0 || j < 0 || i >= 2 * half_ || j >= 2 * half_) return;
+    const size_t k = static_cast<size_t>(i) * static_cast<size_t>(2 * half_) + static_cast<size_t>(j);
+    bits[k >> 6] |= uint64_t{1} << (k & 63u);
+  }
+
+ private:
+  bool enabled_ = false;
+  float cell_ = 1.0f;
+  int half_ = 0;
+  float r2_ = 0.0f;
+};
+
+/// Completes a footprint whose cells a FootprintMarker set: its sight, when verification.max_seen_through < 1.
+void finishFootprint(const std::vector<Eigen::Vector3f>& points, const VerificationConfig& config, Footprint* f);
 
 /// @p f with each occupied cell's eight neighbours set too, and Footprint::dilated; @p f itself if empty or dilated.
 Footprint dilateFootprint(const Footprint& f);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sgtllc/config.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/labels.h"
 #include "sgtllc/types.h"
 
@@ -50,10 +51,16 @@ class NodeExtractor {
 
   /// Throws sgtllc::Error if points and labels differ in length.
   NodeExtractionResult extract(const LabeledCloud& cloud) const;
+  /// The same, and the scan's footprint in @p footprint from the same pass over its points: what
+  /// computeFootprint(cloud, labelMap(), @p verification) gives, bit for bit, without reading the scan again.
+  NodeExtractionResult extract(const LabeledCloud& cloud, const VerificationConfig& verification,
+                               Footprint* footprint) const;
   /// How this extractor reads the scans' ids (the footprint of a scan reads them the same way).
   const LabelMap& labelMap() const { return label_map_; }
 
  private:
+  NodeExtractionResult extract(const LabeledCloud& cloud, const FootprintMarker* marker, Footprint* footprint) const;
+
   ClusterConfig config_;
   LabelMap label_map_;
   int num_classes_;

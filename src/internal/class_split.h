@@ -11,6 +11,7 @@
 #include "internal/voxel_hash.h"
 #include "sgtllc/clustering.h"
 #include "sgtllc/config.h"
+#include "sgtllc/footprint.h"
 #include "sgtllc/labels.h"
 #include "sgtllc/node_extraction.h"
 #include "sgtllc/types.h"
@@ -28,8 +29,9 @@ inline constexpr int kSplitChunks = 2;
 class ClassSplit {
  public:
   /// Splits @p cloud (points and labels of equal length) on up to @p threads threads; adds the counts to @p stats.
+  /// With an enabled @p footprint, the same pass sets the scan's footprint cells (footprint()).
   ClassSplit(const LabeledCloud& cloud, const LabelMap& labels, const ClusterConfig& cluster, int threads,
-             ExtractionStats& stats);
+             ExtractionStats& stats, const FootprintMarker* footprint = nullptr);
 
   /// True if class @p c is downsampled (voxel leaf > 0).
   bool voxelized(int c) const { return chunks_.front().voxels[c].has_value(); }
@@ -39,16 +41,21 @@ class ClassSplit {
   VoxelizedCloud voxels(int c);
   /// Class @p c's points in scan order; call once, !voxelized(c) only.
   std::vector<Eigen::Vector3f> points(int c);
+  /// The cells the pass set, joined over the ranges (an OR: the same at any thread count), in @p f's bits, which
+  /// must be the marker's grid(); nothing without a marker.
+  void footprint(Footprint* f) const;
 
  private:
   struct Chunk {
     std::vector<std::optional<VoxelAccumulator>> voxels;
     std::array<VoxelAccumulator*, kMaxClasses> bounded{};  // voxels on the fast cell path (leaf ≥ 1 mm)
     std::vector<std::vector<Eigen::Vector3f>> points;
+    std::vector<uint64_t> footprint;  // this range's footprint cells
     ExtractionStats stats;
   };
   template <bool kCheck>
-  static void split(const LabeledCloud& cloud, const LabelMap& labels, size_t begin, size_t end, Chunk& chunk);
+  static void split(const LabeledCloud& cloud, const LabelMap& labels, size_t begin, size_t end,
+                    const FootprintMarker* footprint, Chunk& chunk);
 
   std::vector<Chunk> chunks_;
 };

@@ -57,11 +57,11 @@ Relocalizer::Relocalizer(Map map, const Config& config, const std::string& sourc
 
 Relocalization Relocalizer::localize(const LabeledCloud& cloud) const {
   const auto start = std::chrono::steady_clock::now();
-  NodeExtractionResult extracted = extractor_.extract(cloud);
+  Footprint footprint;
+  NodeExtractionResult extracted = extractor_.extract(cloud, config_.verification, &footprint);
   const double extraction_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  Relocalization r = localize(std::move(extracted.nodes),
-                              computeFootprint(cloud, extractor_.labelMap(), config_.verification));
+  Relocalization r = localize(std::move(extracted.nodes), std::move(footprint));
   r.search.extraction = extracted.stats;
   r.search.timing.extraction_ms = extraction_ms;
   return r;

@@ -19,8 +19,7 @@ LoadedFrame FrameReducer::reduce(const LabeledCloud& input) const {
   LabeledCloud labelled;
   if (labeller_.changesLabels()) labelled = labeller_.apply(input);
   const LabeledCloud& cloud = labeller_.changesLabels() ? labelled : input;
-  NodeExtractionResult r = extractor_.extract(cloud);
-  f.footprint = computeFootprint(cloud, extractor_.labelMap(), verification_);
+  NodeExtractionResult r = extractor_.extract(cloud, verification_, &f.footprint);
   f.extraction_ms = msSince(start);  // with the geometric labeller, labelling included
   f.nodes = std::move(r.nodes);
   f.stats = r.stats;
