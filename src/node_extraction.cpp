@@ -97,7 +97,7 @@ NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud) const {
 NodeExtractionResult NodeExtractor::extract(const LabeledCloud& cloud, const VerificationConfig& verification,
                                             Footprint* footprint) const {
   const FootprintMarker marker(verification);
-  NodeExtractionResult result = extract(cloud, &marker, footprint);
+  NodeExtractionResult result = extract(cloud, footprint ? &marker : nullptr, footprint);
   if (footprint) finishFootprint(cloud.points, verification, footprint);
   return result;
 }
