@@ -80,11 +80,11 @@ void sections(py::module_& m) {
       .def("class_name", &LabelConfig::className, py::arg("c"), "name of class index c");
 
   settingsClass<ClassClusterConfig>(m, "ClassClusterConfig", "Per-class clustering (cluster.NAME.*).")
-      .def(py::init([](double voxel, double radius, int min_size, CentreHeight centre_height) {
-             return ClassClusterConfig{voxel, radius, min_size, centre_height};
+      .def(py::init([](double voxel, double radius, int min_size, CentreHeight centre_height, bool score_unmatched) {
+             return ClassClusterConfig{voxel, radius, min_size, centre_height, score_unmatched};
            }),
            py::arg("voxel") = 0.0, py::arg("radius") = 1.0, py::arg("min_size") = 20,
-           py::arg("centre_height") = CentreHeight::kPoints);
+           py::arg("centre_height") = CentreHeight::kPoints, py::arg("score_unmatched") = true);
   py::bind_vector<std::vector<ClassClusterConfig>>(m, "ClassClusterConfigList");
 
   settingsClass<ClusterConfig>(m, "ClusterConfig", "Clustering (cluster.*).")

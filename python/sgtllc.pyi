@@ -63,8 +63,9 @@ class ClassClusterConfig:
     radius: float
     min_size: int
     centre_height: CentreHeight
+    score_unmatched: bool
     def __init__(self, voxel: float = 0.0, radius: float = 1.0, min_size: int = 20,
-                 centre_height: CentreHeight = ...) -> None: ...
+                 centre_height: CentreHeight = ..., score_unmatched: bool = True) -> None: ...
 class ClassClusterConfigList(MutableSequence[ClassClusterConfig]): ...
 class ClusterConfig:
     classes: ClassClusterConfigList

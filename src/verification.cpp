@@ -106,10 +106,43 @@ void checkFootprints(const DescribedFrame& query, const DescribedFrame& match, c
   result->T_match_query = Eigen::Matrix4d::Identity();
 }
 
+/// Whether class @p label's nodes count in the node counts when unmatched (ClassClusterConfig::score_unmatched;
+/// a label outside the classes counts).
+bool countsUnmatched(int label, const ClusterConfig& cluster) {
+  return label < 0 || label >= static_cast<int>(cluster.classes.size()) ||
+         cluster.classes[static_cast<size_t>(label)].score_unmatched;
+}
+
+/// The nodes of @p frame whose class counts unmatched (algorithm §7.3, "Node count").
+int countedNodes(const DescribedFrame& frame, const ClusterConfig& cluster) {
+  int n = 0;
+  for (const Node& node : frame.graph.nodes) n += countsUnmatched(node.label, cluster) ? 1 : 0;
+  return n;
+}
+
+/// The pairs of @p pairs (all of them, or those @p indices picks) whose class counts only when matched.
+int matchedOnly(const DescribedFrame& query, const std::vector<NodeMatch>& pairs, const std::vector<int>* indices,
+                const ClusterConfig& cluster) {
+  int n = 0;
+  const size_t count = indices ? indices->size() : pairs.size();
+  for (size_t k = 0; k < count; ++k) {
+    const NodeMatch& m = pairs[indices ? static_cast<size_t>((*indices)[k]) : k];
+    n += countsUnmatched(query.graph.nodes[m.query].label, cluster) ? 0 : 1;
+  }
+  return n;
+}
+
+/// score_c = |LA| / M, M the query's node count (algorithm §7.1).
+double associationShare(const DescribedFrame& query, const std::vector<NodeMatch>& la, const ClusterConfig& cluster) {
+  const int nodes = countedNodes(query, cluster) + matchedOnly(query, la, nullptr, cluster);
+  return nodes > 0 ? static_cast<double>(la.size()) / nodes : 0.0;
+}
+
 /// score of a pose-verified result under the configured formula, scaled by the offset decay; then the footprint
 /// check (algorithm §7.3, §7.7).
-void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc, int la,
+void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, const Config& config, int la,
                    MatchResult* result) {
+  const VerificationConfig& vc = config.verification;
   const double n_in = static_cast<double>(result->inliers.size());
   switch (vc.score_formula) {
     case ScoreFormula::kPaper:
@@ -118,9 +151,13 @@ void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, con
     case ScoreFormula::kLegacy:
       result->score = (n_in - 1.0) / la;
       break;
-    case ScoreFormula::kOverlap:
-      result->score = n_in / std::max(query.numNodes(), match.numNodes());
+    case ScoreFormula::kOverlap: {
+      // The larger graph's node count, a class that counts only matched adding its inliers (equal on both sides).
+      const int larger = std::max(countedNodes(query, config.cluster), countedNodes(match, config.cluster));
+      result->score = n_in / std::max(1, larger + matchedOnly(query, result->associations, &result->inliers,
+                                                              config.cluster));
       break;
+    }
   }
   result->score *= offsetWeight(result->T_match_query.topRightCorner<3, 1>().norm(), vc);
   checkFootprints(query, match, vc, result);
@@ -174,7 +211,7 @@ MatchResult matchByConsistency(const DescribedFrame& query, const DescribedFrame
   result.rejection = Rejection::kNone;
   result.T_match_query = T;
   if (vc.guided_matching) addGuidedInliers(query, match, ransacParams(vc), &result);
-  scoreVerified(query, match, vc, static_cast<int>(result.associations.size()), &result);
+  scoreVerified(query, match, config, static_cast<int>(result.associations.size()), &result);
   return result;
 }
 
@@ -185,7 +222,7 @@ MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame
   MatchResult result;
   result.associations = associateNodes(similarities, config.association);
   const int la = static_cast<int>(result.associations.size());
-  result.score_c = query.numNodes() > 0 ? static_cast<double>(la) / query.numNodes() : 0.0;
+  result.score_c = associationShare(query, result.associations, config.cluster);
   if (result.score_c < vc.sigma_3 || la < vc.min_associations || la == 0) {
     result.rejection = Rejection::kFewAssociations;
     return result;
@@ -222,7 +259,7 @@ MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame
   // RANSAC checked its hypotheses; a refit to nearly collinear centres leaves the turn about their line free.
   if (!isUpright(result.T_match_query, params.max_tilt)) result.T_match_query = ransac.T_target_source;
   if (vc.guided_matching && vc.score_formula == ScoreFormula::kOverlap) addGuidedInliers(query, match, params, &result);
-  scoreVerified(query, match, vc, la, &result);
+  scoreVerified(query, match, config, la, &result);
   return result;
 }
 

@@ -88,6 +88,49 @@ TEST_F(MatchFrames, ScoreFormulas) {
   EXPECT_GT(paper.score, overlap.score);
 }
 
+TEST_F(MatchFrames, AClassThatCountsOnlyMatchedLeavesTheNodeCountsButNotThePose) {
+  // The scan's most common class counts only where matched (algorithm §7.3, "Node count"); the query lacks two
+  // of its nodes, so the match has unmatched ones.
+  std::vector<int> per_class(sgtllc::kMaxClasses, 0);
+  for (const Node& n : nodes_) ++per_class.at(n.label);
+  const int cls = static_cast<int>(std::max_element(per_class.begin(), per_class.end()) - per_class.begin());
+  std::vector<Node> fewer;
+  int dropped = 0;
+  for (const Node& n : nodes_) {
+    if (n.label == cls && dropped < 2) {
+      ++dropped;
+    } else {
+      fewer.push_back(n);
+    }
+  }
+  const DescribedFrame query = describe(fewer), match = describe(moved_);
+  sgtllc::Config cfg;
+  const auto counted = sgtllc::matchFrames(query, match, cfg);
+  cfg.cluster.classes.at(cls).score_unmatched = false;
+  const auto result = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(result.rejection, sgtllc::Rejection::kNone);
+  // Only the node counts change: the same pairs, inliers and pose.
+  ASSERT_EQ(result.associations.size(), counted.associations.size());
+  EXPECT_EQ(result.inliers, counted.inliers);
+  EXPECT_EQ(result.T_match_query, counted.T_match_query);
+  const auto others = [cls](const std::vector<Node>& nodes) {
+    return static_cast<int>(std::count_if(nodes.begin(), nodes.end(), [cls](const Node& n) { return n.label != cls; }));
+  };
+  int la = 0, la_cls = 0, in_cls = 0;
+  for (const sgtllc::NodeMatch& m : result.associations) {
+    if (m.guided) continue;
+    ++la;
+    la_cls += fewer[m.query].label == cls;
+  }
+  for (int k : result.inliers) in_cls += fewer[result.associations[k].query].label == cls;
+  ASSERT_GT(in_cls, 0);
+  ASSERT_LT(others(moved_) + in_cls, match.numNodes());  // the class has unmatched nodes in the larger graph
+  EXPECT_DOUBLE_EQ(result.score_c, static_cast<double>(la) / (others(fewer) + la_cls));
+  EXPECT_DOUBLE_EQ(result.score, static_cast<double>(result.inliers.size()) /
+                                     (std::max(others(fewer), others(moved_)) + in_cls));
+  EXPECT_GT(result.score, counted.score);
+}
+
 TEST_F(MatchFrames, LegacyScoreFormula) {
   sgtllc::Config cfg;
   cfg.verification.score_formula = sgtllc::ScoreFormula::kLegacy;

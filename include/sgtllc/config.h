@@ -99,6 +99,11 @@ struct ClassClusterConfig {
   double radius = 1.0;  ///< FEC radius r (m)
   int min_size = 20;    ///< minimum cluster size; counts voxels when voxel > 0, else points
   CentreHeight centre_height = CentreHeight::kPoints;  ///< the height of the node's centre
+  /// Whether this class's nodes count in the loop score's node count (and score_c's) when they are not matched.
+  /// false: they count only as matches, so a class a sensor rarely sees again from a few metres away (terrain
+  /// on a 32-beam sensor, BENCHMARKS.md "Which classes repeat on a 32-beam sensor") adds evidence but never
+  /// dilutes it; the nodes still shape every descriptor (algorithm §7.3, "Node count").
+  bool score_unmatched = true;
 };
 
 struct ClusterConfig {
@@ -234,7 +239,9 @@ struct AssociationConfig {
 enum class ScoreFormula {
   kPaper,    ///< n_in / |LA|, as the paper
   kLegacy,   ///< (n_in − 1) / |LA|, as the authors' code
-  kOverlap,  ///< n_in / max(M, N): the share of the larger graph's nodes that are verified inliers [default]
+  /// n_in / max(M, N): the share of the larger graph's nodes that are verified inliers [default]; M and N leave
+  /// out the unmatched nodes of a class with ClassClusterConfig::score_unmatched false
+  kOverlap,
 };
 
 struct VerificationConfig {

@@ -37,7 +37,9 @@ struct MatchResult {
   std::vector<NodeMatch> associations;
   /// Indices into associations of the inliers, ascending: RANSAC's, or guided matching's pairs when it found more.
   std::vector<int> inliers;
-  double score_c = 0.0;                 ///< |LA| / M, M = all query nodes, isolated ones included (algorithm §7.1)
+  /// |LA| / M, M = all query nodes, isolated ones included, those of a class with score_unmatched false only when
+  /// in LA (algorithm §7.1, §7.3 "Node count")
+  double score_c = 0.0;
   double score = 0.0;                 ///< loop score; 0 unless rejection == kNone (algorithm §7.3)
   Rejection rejection = Rejection::kFewAssociations;
   /// Maps query-frame points into the match frame: p_match = T_match_query · p_query. Kabsch on all inliers

@@ -40,6 +40,10 @@ def test_yaml_round_trip(tmp_path):
     assert c.cluster.classes[5].centre_height == sgtllc.CentreHeight.SENSOR
     assert c.cluster.classes[0].centre_height == sgtllc.CentreHeight.POINTS
     c.cluster.classes[0].centre_height = sgtllc.CentreHeight.SENSOR
+    # A class whose unmatched nodes do not count in the loop score (algorithm §7.3, "Node count").
+    assert c.cluster.classes[4].score_unmatched
+    assert not sgtllc.ClassClusterConfig(score_unmatched=False).score_unmatched
+    c.cluster.classes[4].score_unmatched = False
     path = tmp_path / "c.yaml"
     path.write_text(c.to_yaml())
     back = sgtllc.Config.from_yaml(str(path))
@@ -48,6 +52,8 @@ def test_yaml_round_trip(tmp_path):
     assert back.verification.sigma_4 == 0.25 and back.cluster.classes[7].min_size == 100
     assert back.cluster.classes[0].centre_height == sgtllc.CentreHeight.SENSOR
     assert "centre_height: sensor" in c.to_yaml().split("fence:")[0]
+    assert not back.cluster.classes[4].score_unmatched and back.cluster.classes[3].score_unmatched
+    assert "score_unmatched: false" in c.to_yaml().split("terrain:")[1].split("pole:")[0]
     assert sgtllc.Config.from_yaml_string(c.to_yaml()) == c
 
 

@@ -39,6 +39,8 @@ void addClusterSettings(const LabelConfig& labels, std::vector<Setting>* out) {
     c.choice("centre_height", &ClassClusterConfig::centre_height,
              {{"points", CentreHeight::kPoints}, {"sensor", CentreHeight::kSensor}},
              "node centre's height: its points' mean, or the sensor's (z = 0; upright objects)");
+    c.flag("score_unmatched", &ClassClusterConfig::score_unmatched,
+           "unmatched nodes count in the loop score's node count (false: only matched ones do)");
   }
   SectionTable<ClusterConfig> c("cluster", [](Config& config) -> ClusterConfig& { return config.cluster; }, out);
   c.number("max_neighbors", &ClusterConfig::max_neighbors, "[1, 10000]", "",

@@ -19,6 +19,9 @@ constexpr double kRigidTolerance = 1e-3;
 /// network labels give other nodes), or single retrieval keys.
 bool storedField(std::string_view key) {
   if (key == "labels.format") return false;  // how label files hold the ids, not which ids: the nodes are the same
+  // How a query's score counts nodes, not which nodes a map holds.
+  constexpr std::string_view kScoreOnly = ".score_unmatched";
+  if (key.size() > kScoreOnly.size() && key.substr(key.size() - kScoreOnly.size()) == kScoreOnly) return false;
   for (std::string_view section : {"labels.", "labeller.", "cluster.", "graph.", "descriptor."}) {
     if (key.substr(0, section.size()) == section) return true;
   }
