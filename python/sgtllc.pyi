@@ -389,6 +389,7 @@ class RelocalizationTracker:
 
 # --- the process (module.cpp) ---
 def reuse_freed_memory(keep_bytes: int = 33554432) -> bool: ...  # call once, at start
+def huge_page_heap(bytes: int = 67108864) -> bool: ...  # call once, at start, after reuse_freed_memory
 
 # --- readers (io.cpp) ---
 def label_scan(points: ArrayLike, config: LabellerConfig = ...) -> Tuple[np.ndarray, np.ndarray]: ...  # (N,) int8, (N,) uint8

@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
   // Frame after frame, the buffers one frame frees serve the next instead of being faulted in afresh
   // (memory_reuse.h; BENCHMARKS.md, "Memory kept for the next frame").
   sgtllc::reuseFreedMemory();
+  // And a page fault per 2 MB rather than per 4 KB where the kernel offers huge pages (BENCHMARKS.md, "Huge pages
+  // for the heap").
+  sgtllc::hugePageHeap();
   CLI::App app{"sgtllc: LiDAR loop closing with semantic graphs (SGT-LLC)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", sgtllc::cli::softwareText());

@@ -16,4 +16,16 @@ namespace sgtllc {
 /// glibc's, such as AddressSanitizer's).
 bool reuseFreedMemory(std::size_t keep_bytes = std::size_t{32} << 20);
 
+/// Backs the next @p bytes of the heap with huge pages where the kernel offers them (transparent huge pages in
+/// `madvise` or `always` mode): one page fault per 2 MB instead of one per 4 KB, which on a virtual machine is most
+/// of a short command's time (BENCHMARKS.md, "Huge pages for the heap"). It makes the heap grow by at least
+/// @p bytes at a time (glibc's top pad), grows it once and marks that region MADV_HUGEPAGE; the heap beyond it keeps
+/// normal pages. Process-wide, so a library never does it on its own: call it once at start, after
+/// reuseFreedMemory (whose mmap threshold keeps the blocks of a scan's size on the heap; the command-line tool does,
+/// Python offers sgtllc.huge_page_heap()). Memory in use grows by at most one huge page per touched 2 MB; results
+/// do not change. Returns false, glibc's top pad back at its default, where the C library or the kernel offers no
+/// such setting (not glibc, an allocator that replaces glibc's, a kernel built without transparent huge pages) or
+/// the heap did not grow; true means the region is marked, which a kernel in `never` mode then ignores.
+bool hugePageHeap(std::size_t bytes = std::size_t{64} << 20);
+
 }  // namespace sgtllc

@@ -1,4 +1,6 @@
 """The geometric labeller from Python: label_scan on a real KITTI scan and on bad input, and the config key."""
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -96,3 +98,18 @@ def test_reuse_freed_memory_keeps_results():
     np.testing.assert_array_equal(sgtllc.label_scan_ids(scan), before)
     with pytest.raises(TypeError):
         sgtllc.reuse_freed_memory(-1)
+
+
+def test_huge_page_heap_keeps_results():
+    # Process-wide (memory_reuse.h): true wherever glibc's heap grew into a region marked for huge pages, which
+    # a kernel offering them (madvise or always mode) always lets it do.
+    import platform
+    scan = sgtllc.read_kitti_bin(str(QUERY_BIN))
+    before = sgtllc.label_scan_ids(scan)
+    sgtllc.reuse_freed_memory()
+    marked = sgtllc.huge_page_heap()
+    mode = Path("/sys/kernel/mm/transparent_hugepage/enabled")
+    offered = mode.exists() and ("[always]" in mode.read_text() or "[madvise]" in mode.read_text())
+    assert marked is True or not (platform.libc_ver()[0] == "glibc" and offered)
+    np.testing.assert_array_equal(sgtllc.label_scan_ids(scan), before)
+    assert sgtllc.huge_page_heap(1 << 20) is False  # under two huge pages: nothing to mark
