@@ -2,7 +2,8 @@
 // mapped on its own (blocks over the mmap threshold) or when the free space at the top of the heap exceeds the trim
 // threshold; both start at 128 KB, and although the mmap threshold rises once a large block is freed, the trim
 // threshold then follows at only twice it. Setting both fixes them: blocks under half of keep_bytes come from the
-// heap, and up to keep_bytes of free space stays there.
+// heap, and up to keep_bytes of free space stays there. hugePageHeap then marks the heap's next stretch for huge
+// pages, so those blocks' first touches fault in 2 MB at a time.
 #include "sgtllc/memory_reuse.h"
 
 #include <algorithm>
