@@ -60,6 +60,7 @@ TEST(MemoryReuse, SameLabelsWithFreedMemoryKept) {
   EXPECT_GT(before.segments, 100);
 }
 
+#if defined(__GLIBC__)
 /// The VmFlags line of the mapping in /proc/self/smaps that holds @p address ("" if none).
 std::string vmFlagsAt(const void* address) {
   std::ifstream smaps("/proc/self/smaps");
@@ -77,6 +78,7 @@ std::string vmFlagsAt(const void* address) {
   }
   return "";
 }
+#endif
 
 /// Whether the kernel offers transparent huge pages to a region that asks for them.
 bool kernelOffersHugePages() {
@@ -97,7 +99,8 @@ TEST(MemoryReuse, HeapRegionMarkedForHugePages) {
     EXPECT_TRUE(marked);
   }
 #else
-  EXPECT_FALSE(marked);
+  EXPECT_FALSE(marked) << "an allocator with a heap of its own; the kernel offers huge pages: "
+                       << kernelOffersHugePages();
 #endif
 #if defined(__GLIBC__)
   // The heap's top, where the next blocks come from, lies in the marked region ("hg" in the mapping's flags:
