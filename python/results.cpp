@@ -1,6 +1,8 @@
 // Result types of the detector and of compare_pair, read-only, field by field as in include/sgtllc/detector.h,
 // verification.h and node_extraction.h. Eigen members (T_match_query) are (4, 4) float64 arrays that view the
 // result (no copy). Adding a field is one `.def_readonly` line here and one line in sgtllc.pyi.
+#include <array>
+
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -49,6 +51,13 @@ void bindResults(py::module_& m) {
                     "query structure cells compared (0: the check did not run)")
       .def_readonly("share", &FootprintOverlap::share, "share of them on or next to a match structure cell")
       .def_readonly("seen", &FootprintOverlap::seen, "the two frames' sights under the pose (SeenThrough)");
+  py::class_<FootprintShift>(m, "FootprintShift", "The footprint search of a verified pose (algorithm 7.9).")
+      .def_property_readonly("shift", [](const FootprintShift& s) { return std::array<double, 2>{s.shift.x(), s.shift.y()}; },
+                             "(x, y) m added to the pose's translation; (0, 0) unless it gained "
+                             "verification.footprint_search_gain")
+      .def_readonly("compared", &FootprintShift::compared, "query structure cells judged (0: the search did not run)")
+      .def_readonly("share", &FootprintShift::share, "share of them on or next to a match structure cell, shifted")
+      .def_readonly("unshifted_share", &FootprintShift::unshifted_share, "... and under the pose before the shift");
   py::enum_<Search>(m, "Search", "Whether a frame's query searched the database, or why not.")
       .value("SEARCHED", Search::kSearched, "older frames existed and were searched")
       .value("TOO_RECENT", Search::kTooRecent, "no stored frame is retrieval.exclude_recent or more frames older")
@@ -90,6 +99,8 @@ void bindResults(py::module_& m) {
       .def_readonly("rejection", &MatchResult::rejection, "why score is 0, or NONE")
       .def_readonly("T_match_query", &MatchResult::T_match_query, "(4, 4): p_match = T_match_query @ p_query")
       .def_readonly("footprint", &MatchResult::footprint, "the footprint check under the verified pose")
+      .def_readonly("footprint_search", &MatchResult::footprint_search,
+                    "the footprint search (FootprintShift): the shift the pose includes, if any")
       .def_readonly("by_consistency", &MatchResult::by_consistency,
                     "the pairs came from the consistency path, not from the descriptors (algorithm 7.8)")
       .def_property_readonly("association_pairs", [](const MatchResult& r) { return pairsArray(r, nullptr); },

@@ -122,6 +122,8 @@ class VerificationConfig:
     offset_decay_end: float
     min_footprint_overlap: float
     max_seen_through: float
+    footprint_search: float
+    footprint_search_gain: float
     footprint_cell: float
     footprint_radius: float
     seed: int
@@ -253,6 +255,11 @@ class FootprintOverlap:
     compared: int
     share: float
     seen: SeenThrough
+class FootprintShift:
+    shift: Tuple[float, float]
+    compared: int
+    share: float
+    unshifted_share: float
 class Search(Enum):
     SEARCHED: int; TOO_RECENT: int; WARMUP: int
 class StageTimes:
@@ -287,6 +294,7 @@ class MatchResult:
     association_pairs: np.ndarray  # (K, 2) int32
     inlier_pairs: np.ndarray  # (n_in, 2) int32
     footprint: FootprintOverlap
+    footprint_search: FootprintShift
     by_consistency: bool
 class Refinement:
     status: RefinementStatus

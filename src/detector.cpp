@@ -152,6 +152,16 @@ void searchDatabase(const DescribedFrame& query, const std::vector<float>& key, 
 
 namespace {
 
+/// Database frame @p frame described as a candidate. A candidate is only matched against, and its description is
+/// cached: its footprint is dilated once, each query cell then costs one look-up instead of nine (footprint.h).
+std::shared_ptr<const DescribedFrame> describeCandidate(int frame, const FrameDatabase& database, const Config& config,
+                                                        const Footprints* footprints) {
+  DescribedFrame described = describeFrame(database.nodes(frame), config.graph, config.descriptor,
+                                           /*with_global=*/false, config.numClasses());
+  if (footprints) described.footprint = dilateFootprint((*footprints)[static_cast<size_t>(frame)]);
+  return std::make_shared<const DescribedFrame>(std::move(described));
+}
+
 /// Verifies candidates[first..] against the query; each writes only its own slot. Cache look-ups and inserts stay on
 /// this thread, in candidate order; workers describe the misses.
 void verifyCandidates(const DescribedFrame& query, const FrameDatabase& database, const Config& config,
@@ -164,14 +174,7 @@ void verifyCandidates(const DescribedFrame& query, const FrameDatabase& database
   }
   parallelFor(static_cast<int>(count), config.threads, [&](int c) {
     Candidate& cand = candidates[first + static_cast<size_t>(c)];
-    if (!described[c]) {
-      DescribedFrame frame = describeFrame(database.nodes(cand.frame), config.graph, config.descriptor,
-                                           /*with_global=*/false, config.numClasses());
-      // A candidate is only matched against, and its description is cached: dilated once, each query cell then
-      // costs one look-up instead of nine (footprint.h).
-      if (footprints) frame.footprint = dilateFootprint((*footprints)[static_cast<size_t>(cand.frame)]);
-      described[c] = std::make_shared<const DescribedFrame>(std::move(frame));
-    }
+    if (!described[c]) described[c] = describeCandidate(cand.frame, database, config, footprints);
     cand.match = matchFrames(query, *described[c], config);
   });
   if (cache) {
@@ -225,7 +228,13 @@ void search(const DescribedFrame& query, const std::vector<float>& key, const Fr
       result->best = chooseCandidate(result->candidates, config.verification);
     }
   }
-  const Candidate* best = result->best >= 0 ? &result->candidates[result->best] : nullptr;
+  Candidate* best = result->best >= 0 ? &result->candidates[result->best] : nullptr;
+  // The declared loop's pose, and only its, gets the footprint search (searchFootprints), before it is judged lateral.
+  if (best && isLoop(best->match, config.verification) && config.verification.footprint_search > 0.0 && footprints) {
+    std::shared_ptr<const DescribedFrame> match = cache ? cache->find(best->frame) : nullptr;
+    if (!match) match = describeCandidate(best->frame, database, config, footprints);
+    searchFootprints(query, *match, config.verification, &best->match);
+  }
   result->lateral = best && isLateral(best->match, config.verification);
   result->is_loop = best && isLoop(best->match, config.verification);
   result->timing.verification_ms = msSince(start);
@@ -269,6 +278,7 @@ PairResult comparePair(std::vector<Node> query, std::vector<Node> match, const C
   result.timing.description_ms = msSince(start);
   start = Clock::now();
   result.match = matchFrames(q, m, config);
+  searchFootprints(q, m, config.verification, &result.match);
   result.timing.verification_ms = msSince(start);
   result.query_nodes = q.graph.nodes;
   result.match_nodes = m.graph.nodes;

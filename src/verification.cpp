@@ -265,6 +265,39 @@ MatchResult matchByDescriptors(const DescribedFrame& query, const DescribedFrame
 
 }  // namespace
 
+void searchFootprints(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& vc,
+                      MatchResult* result) {
+  if (vc.footprint_search <= 0.0 || !isLoop(*result, vc) || result->footprint.compared < kMinFootprintCells) return;
+  // No shift can gain enough over footprints that already agree this well (most loops of a 64-beam sensor).
+  if (result->footprint.share + vc.footprint_search_gain > 1.0) return;
+  FootprintShift& s = result->footprint_search;
+  s = bestFootprintShift(query.footprint, match.footprint, result->T_match_query, vc.footprint_search,
+                         kMinFootprintCells, vc.footprint_search_gain);
+  // A best shift on the edge of the searched square is no peak: the structure may agree better beyond it.
+  const double edge = std::floor(vc.footprint_search / query.footprint.cell) * query.footprint.cell;
+  const bool on_edge = std::abs(s.shift.x()) >= edge || std::abs(s.shift.y()) >= edge;
+  if (s.compared == 0 || on_edge || !(s.share >= s.unshifted_share + vc.footprint_search_gain)) {
+    s.shift.setZero();
+    s.share = s.unshifted_share;
+    return;
+  }
+  Eigen::Matrix4d shifted = result->T_match_query;
+  shifted(0, 3) += s.shift.x();
+  shifted(1, 3) += s.shift.y();
+  result->T_match_query = shifted;
+  // The search moves in whole cells; the nodes the shifted pose pairs refine it within one cell. The pairs of the
+  // nodes' pose stay the result's inliers: they are the loop's evidence.
+  const GuidedMatch refit = guidedMatching(query.graph, match.graph, shifted, vc.inlier_threshold,
+                                           static_cast<size_t>(std::max(0, vc.min_inliers - 1)),
+                                           vc.max_tilt_deg * M_PI / 180.0);
+  if (!refit.pairs.empty() &&
+      (refit.T_match_query.topRightCorner<2, 1>() - shifted.topRightCorner<2, 1>()).norm() <= query.footprint.cell) {
+    result->T_match_query = refit.T_match_query;
+  }
+  // What the footprints say under the pose the result now has; the check's decision, under the nodes' pose, stands.
+  result->footprint = footprintOverlap(query.footprint, match.footprint, result->T_match_query);
+}
+
 MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match, const Config& config) {
   // The node similarities are computed once: the consistency path ranks the same ones.
   const NodeSimilarities similarities = nodeSimilarities(query, match, config.association, config.descriptor);

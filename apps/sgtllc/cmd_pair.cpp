@@ -129,6 +129,14 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
                 << config.verification.max_seen_through << ")\n";
     }
   }
+  const FootprintShift& search = m.footprint_search;
+  const bool shifted = search.compared > 0 && search.shift.squaredNorm() > 0.0;
+  if (shifted) {
+    std::cout << "footprint search: the nodes' pose moved by (" << fixed(search.shift.x(), 2) << ", "
+              << fixed(search.shift.y(), 2) << ") m, where " << fixed(search.share, 3) << " of " << search.compared
+              << " cells agree instead of " << fixed(search.unshifted_share, 3) << " (verification.footprint_search "
+              << config.verification.footprint_search << " m, algorithm §7.9)\n";
+  }
   if (m.rejection == Rejection::kNone) {
     std::cout << "T_match_query (maps query points into the match frame"
               << (r.refinement && r.refinement->used() ? ", refined by ICP" : "") << "):\n"
@@ -138,7 +146,11 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
     std::cout << "refinement: " << refinementStatusName(f->status) << (f->used() ? "" : " (kept the SVD pose)")
               << "   fitness " << fixed(f->fitness, 3) << ", rmse " << fixed(f->rmse_m, 4) << " m, iterations "
               << f->iterations << ", points " << f->query_points << " / " << f->match_points << "\n";
-    if (f->used()) std::cout << "T_match_query before refinement (SVD):\n" << matrixText(f->T_match_query_seed, "  ");
+    if (f->used()) {
+      std::cout << "T_match_query before refinement (SVD" << (shifted ? ", moved by the footprint search" : "")
+                << "):\n"
+                << matrixText(f->T_match_query_seed, "  ");
+    }
   }
   const StageTimes& t = r.timing;
   std::cout << "time (ms): load " << fixed(load_ms, 2) << ", extraction " << fixed(t.extraction_ms, 2)
@@ -154,6 +166,14 @@ Json footprintJson(const FootprintOverlap& f, const VerificationConfig& config) 
           {"min_share", config.min_footprint_overlap},
           {"seen_through", f.seen.share()},
           {"sight_judged", f.seen.judged}};
+}
+
+Json footprintSearchJson(const FootprintShift& s) {
+  if (s.compared == 0) return nullptr;
+  return {{"shift_m", {s.shift.x(), s.shift.y()}},
+          {"share", s.share},
+          {"unshifted_share", s.unshifted_share},
+          {"compared_cells", s.compared}};
 }
 
 void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
@@ -204,6 +224,7 @@ void printJson(const PairOptions& o, const PairResult& r, const Config& config, 
                               {"guided_pairs", guided},
                               {"inliers", m.inliers.size()},
                               {"path", m.by_consistency ? "consistency" : "descriptors"},
+                              {"footprint_search", footprintSearchJson(m.footprint_search)},
                               {"footprint", footprintJson(m.footprint, config.verification)},
                               {"matches", matches},
                               {"T_match_query", matrixJson(m.T_match_query)},

@@ -335,6 +335,16 @@ struct VerificationConfig {
   /// cost the 32-beam drive h32 three true ones (BENCHMARKS.md "Seen through"). Below 1 the scans keep their
   /// sights and the share is reported (MatchResult::footprint.seen); 0.99 measures it and rejects nearly nothing.
   double max_seen_through = 1.0;
+  /// Footprint search (searchFootprints in verification.h, algorithm §7.9): the declared loop's pose moves by the
+  /// horizontal shift, within this reach (m, in x and in y), under which the footprints agree best, when they agree
+  /// by footprint_search_gain more there; 0 = off, as the paper. Segments along a straight street are centred on
+  /// the part a scan sees and evenly planted trees match their neighbours, so the nodes can agree on a pose metres
+  /// short along the street; the structure beside it does not. The loop decision stays that of the nodes' pose.
+  /// [deviation: BENCHMARKS.md "Footprint search"]
+  double footprint_search = 15.0;
+  /// ... the gain in footprint share a shift needs. [tuned on nuScenes scenes 0001 and 0005: BENCHMARKS.md
+  /// "Footprint search"]
+  double footprint_search_gain = 0.03;
   double footprint_cell = 0.5;     ///< side of a footprint cell (m)
   double footprint_radius = 40.0;  ///< a footprint covers the square reaching this far from the sensor (m)
   /// RANSAC random seed; every candidate starts from it (algorithm §7.2 [CHOICE]).

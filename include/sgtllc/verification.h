@@ -9,6 +9,7 @@
 #include "sgtllc/association.h"
 #include "sgtllc/config.h"
 #include "sgtllc/footprint.h"
+#include "sgtllc/footprint_search.h"
 #include "sgtllc/frame.h"
 #include "sgtllc/ransac.h"
 
@@ -52,6 +53,11 @@ struct MatchResult {
   /// The pairs came from the consistency path (algorithm §7.8), not from the descriptors' LA: `associations` are
   /// then that path's pairs (and guided ones), score_c is still the descriptors' |LA| / M.
   bool by_consistency = false;
+  /// The footprint search (searchFootprints, algorithm §7.9) from the nodes' pose: the shift T_match_query includes
+  /// (zero when no shift gained verification.footprint_search_gain) and the footprint shares with and without it;
+  /// compared = 0 when it did not run (not the declared loop, verification.footprint_search 0, no footprints, or
+  /// footprints that already agree too well for any shift to gain that much).
+  FootprintShift footprint_search;
 };
 
 /// RANSAC parameters of the verification config.
@@ -71,5 +77,16 @@ MatchResult matchFrames(const DescribedFrame& query, const DescribedFrame& match
 inline bool isLoop(const MatchResult& m, const VerificationConfig& config) {
   return m.rejection == Rejection::kNone && m.score > config.sigma_4;
 }
+
+/// The footprint search (algorithm §7.9, footprint_search.h) on a loop: its pose moves by the horizontal shift,
+/// within verification.footprint_search, under which the footprints agree by footprint_search_gain more (not one on
+/// the edge of the searched square), and the nodes the moved pose pairs refine it within a cell; `footprint` is then
+/// what the footprints say under the moved pose, `footprint_search` what the search found. The loop decision and
+/// score stand as verified on the nodes' pose: judged at the best of a thousand shifts, two different places'
+/// footprints agree more than at one pose. Like fine registration it is for the declared loop (the detector's top-1,
+/// a pair): run on every candidate it cost an online run a tenth of its time and moved none of its poses
+/// (BENCHMARKS.md "Footprint search"). Does nothing unless @p result is a loop whose footprint check ran.
+void searchFootprints(const DescribedFrame& query, const DescribedFrame& match, const VerificationConfig& config,
+                      MatchResult* result);
 
 }  // namespace sgtllc

@@ -51,6 +51,11 @@ void addVerificationSettings(std::vector<Setting>* out) {
   v.number("max_seen_through", &V::max_seen_through, "[0, 1]", "",
            "reject a verified candidate when, under its pose, one frame's beams went past more than this share of the "
            "other's structure taller than the sensor; 1 = off");
+  v.number("footprint_search", &V::footprint_search, "[0, 40]", "m",
+           "shift the declared loop's pose by up to this far in x and y to where the footprints agree best ...; "
+           "0 = off");
+  v.number("footprint_search_gain", &V::footprint_search_gain, "[0, 1]", "",
+           "... when they agree there by this much more (footprint share)");
   v.number("footprint_cell", &V::footprint_cell, "[0.2, 10]", "m", "side of a footprint cell");
   v.number("footprint_radius", &V::footprint_radius, "[5, 200]", "m", "footprints reach this far from the sensor");
   v.number("seed", &V::seed, "[0, 4294967295]", "", "RANSAC seed (std::mt19937)");

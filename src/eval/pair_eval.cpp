@@ -100,7 +100,10 @@ void scorePairs(PairListRun& run, const std::vector<DescribedFrame>& frames, con
   parallelFor(static_cast<int>(run.pairs.size()), options.threads, [&](int k) {
     PairRecord& r = run.pairs[k];
     if (!r.available) return;
-    const MatchResult m = matchFrames(frames[slot_of.at(r.pair.query)], frames[slot_of.at(r.pair.candidate)], config);
+    const DescribedFrame& query = frames[slot_of.at(r.pair.query)];
+    const DescribedFrame& candidate = frames[slot_of.at(r.pair.candidate)];
+    MatchResult m = matchFrames(query, candidate, config);
+    searchFootprints(query, candidate, config.verification, &m);  // each listed pair is a declared loop if it is one
     r.score = m.score;
     r.score_c = m.score_c;
     r.rejection = m.rejection;
