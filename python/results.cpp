@@ -1,8 +1,6 @@
 // Result types of the detector and of compare_pair, read-only, field by field as in include/sgtllc/detector.h,
 // verification.h and node_extraction.h. Eigen members (T_match_query) are (4, 4) float64 arrays that view the
 // result (no copy). Adding a field is one `.def_readonly` line here and one line in sgtllc.pyi.
-#include <array>
-
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -52,7 +50,8 @@ void bindResults(py::module_& m) {
       .def_readonly("share", &FootprintOverlap::share, "share of them on or next to a match structure cell")
       .def_readonly("seen", &FootprintOverlap::seen, "the two frames' sights under the pose (SeenThrough)");
   py::class_<FootprintShift>(m, "FootprintShift", "The footprint search of a verified pose (algorithm 7.9).")
-      .def_property_readonly("shift", [](const FootprintShift& s) { return std::array<double, 2>{s.shift.x(), s.shift.y()}; },
+      .def_property_readonly("shift",
+                             [](const FootprintShift& s) { return py::make_tuple(s.shift.x(), s.shift.y()); },
                              "(x, y) m added to the pose's translation; (0, 0) unless it gained "
                              "verification.footprint_search_gain")
       .def_readonly("compared", &FootprintShift::compared, "query structure cells judged (0: the search did not run)")

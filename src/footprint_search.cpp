@@ -26,7 +26,8 @@ std::vector<Eigen::Vector2i> landingCells(const Footprint& query, const Eigen::M
   for (size_t w = 0; w < query.bits.size(); ++w) {
     for (uint64_t word = query.bits[w]; word != 0; word &= word - 1) {
       const size_t k = w * 64 + static_cast<size_t>(__builtin_ctzll(word));
-      const int i = static_cast<int>(k / static_cast<size_t>(side)), j = static_cast<int>(k % static_cast<size_t>(side));
+      const int i = static_cast<int>(k / static_cast<size_t>(side));
+      const int j = static_cast<int>(k % static_cast<size_t>(side));
       const Eigen::Vector3d p((i - query.half + 0.5) * cell, (j - query.half + 0.5) * cell, 0.0);
       const Eigen::Vector2d m = (R * p + t).head<2>();
       if (!(m.squaredNorm() <= reach2)) continue;

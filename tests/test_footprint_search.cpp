@@ -64,9 +64,9 @@ TEST(FootprintSearch, AnOddNumberOfCellsIsFoundByTheFinePass) {
   EXPECT_DOUBLE_EQ(s.share, 1.0);
 }
 
-TEST(FootprintSearch, ARightPoseStaysAndTiesGoToTheShorterShift) {
-  // The pose is right: no shift agrees better, and those that agree as well (the wall alone cannot tell) lose to
-  // the zero shift.
+TEST(FootprintSearch, ARightPoseStaysWhereItsNeighboursTie) {
+  // The pose is right: no shift agrees better. Those one cell off agree as well (the cell of slack), and the zero
+  // shift, in the middle of that plateau, has the best neighbours.
   const Footprint match = street(0.0), query = street(2.0);
   const FootprintShift s = bestFootprintShift(query, match, translation(0.0, 2.0), 10.0, 20);
   EXPECT_DOUBLE_EQ(s.shift.norm(), 0.0);

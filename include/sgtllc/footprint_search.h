@@ -21,10 +21,10 @@ struct FootprintShift {
 /// the one under which the most of the query's compared cells land on or next to the match's structure (the
 /// share of footprintOverlap, over the cells it compares under the unshifted pose). A coarse pass every third cell,
 /// on an even sample of at most 256 of the query's cells, then the cells around its best on all of them: with
-/// footprintOverlap's cell of slack a peak cannot fall between two coarse shifts. That slack also lets a shift and its neighbours agree equally well; the fine pass gives such a
-/// tie to the shift whose eight neighbours agree best (the middle of the plateau), then to the shorter shift, the
-/// lower x, the lower y, so that the answer is a pure function of its inputs whether @p match is stored dilated
-/// or not.
+/// footprintOverlap's cell of slack a peak cannot fall between two coarse shifts. That slack also lets a shift and
+/// its neighbours agree equally well; the fine pass gives such a tie to the shift whose eight neighbours agree best
+/// (the middle of the plateau), then to the shorter shift, the lower x, the lower y, so that the answer is a pure
+/// function of its inputs whether @p match is stored dilated or not.
 ///
 /// Segments along a straight street (walls, fences, hedges, ground) are centred on the part each scan sees, which
 /// moves with the sensor, and trees planted at even spacing match their neighbours: the nodes can then agree on a
