@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "internal/footprint_cells.h"
+
 namespace sgtllc {
 
 size_t Footprint::words(int half) {
@@ -72,30 +74,15 @@ Footprint dilateFootprint(const Footprint& f) {
 FootprintOverlap footprintOverlap(const Footprint& query, const Footprint& match, const Eigen::Matrix4d& T_match_query) {
   FootprintOverlap o;
   if (query.empty() || match.empty() || query.dilated || query.half != match.half || query.cell != match.cell) return o;
-  const int side = 2 * query.half;
-  const double cell = query.cell;
-  const double reach = 0.8 * query.half * cell;  // away from the match grid's edge, where its sensor saw little
-  const Eigen::Matrix3d R = T_match_query.topLeftCorner<3, 3>();
-  const Eigen::Vector3d t = T_match_query.topRightCorner<3, 1>();
   int hits = 0;
-  // Set bits only, word by word, lowest first: a footprint is mostly empty.
-  for (size_t w = 0; w < query.bits.size(); ++w) {
-    for (uint64_t word = query.bits[w]; word != 0; word &= word - 1) {
-      const size_t k = w * 64 + static_cast<size_t>(__builtin_ctzll(word));
-      const int i = static_cast<int>(k / static_cast<size_t>(side)), j = static_cast<int>(k % static_cast<size_t>(side));
-      const Eigen::Vector3d p((i - query.half + 0.5) * cell, (j - query.half + 0.5) * cell, 0.0);
-      const Eigen::Vector3d m = R * p + t;
-      if (!(m.head<2>().norm() <= reach)) continue;  // a NaN pose compares nothing (and casts nothing below)
-      ++o.compared;
-      const int mi = static_cast<int>(std::floor(m.x() / cell)) + match.half;
-      const int mj = static_cast<int>(std::floor(m.y() / cell)) + match.half;
-      bool hit = match.dilated && match.occupied(mi, mj);
-      for (int di = -1; di <= 1 && !hit && !match.dilated; ++di) {
-        for (int dj = -1; dj <= 1 && !hit; ++dj) hit = match.occupied(mi + di, mj + dj);
-      }
-      hits += hit ? 1 : 0;
+  internal::forEachLandingCell(query, T_match_query, [&](int mi, int mj) {
+    ++o.compared;
+    bool hit = match.dilated && match.occupied(mi, mj);
+    for (int di = -1; di <= 1 && !hit && !match.dilated; ++di) {
+      for (int dj = -1; dj <= 1 && !hit; ++dj) hit = match.occupied(mi + di, mj + dj);
     }
-  }
+    hits += hit ? 1 : 0;
+  });
   o.share = o.compared > 0 ? static_cast<double>(hits) / o.compared : 0.0;
   o.seen = seenThrough(query.sight, match.sight, T_match_query);
   return o;

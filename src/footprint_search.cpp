@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "internal/footprint_cells.h"
+
 namespace sgtllc {
 namespace {
 
@@ -18,23 +20,7 @@ constexpr size_t kCoarseCells = 256;
 /// far cells the match's sensor saw least of.
 std::vector<Eigen::Vector2i> landingCells(const Footprint& query, const Eigen::Matrix4d& T_match_query) {
   std::vector<Eigen::Vector2i> out;
-  const int side = 2 * query.half;
-  const double cell = query.cell;
-  const double reach2 = std::pow(0.8 * query.half * cell, 2);
-  const Eigen::Matrix3d R = T_match_query.topLeftCorner<3, 3>();
-  const Eigen::Vector3d t = T_match_query.topRightCorner<3, 1>();
-  for (size_t w = 0; w < query.bits.size(); ++w) {
-    for (uint64_t word = query.bits[w]; word != 0; word &= word - 1) {
-      const size_t k = w * 64 + static_cast<size_t>(__builtin_ctzll(word));
-      const int i = static_cast<int>(k / static_cast<size_t>(side));
-      const int j = static_cast<int>(k % static_cast<size_t>(side));
-      const Eigen::Vector3d p((i - query.half + 0.5) * cell, (j - query.half + 0.5) * cell, 0.0);
-      const Eigen::Vector2d m = (R * p + t).head<2>();
-      if (!(m.squaredNorm() <= reach2)) continue;
-      out.emplace_back(static_cast<int>(std::floor(m.x() / cell)) + query.half,
-                       static_cast<int>(std::floor(m.y() / cell)) + query.half);
-    }
-  }
+  internal::forEachLandingCell(query, T_match_query, [&](int i, int j) { out.emplace_back(i, j); });
   return out;
 }
 
