@@ -178,11 +178,12 @@ TEST_F(MatchFrames, Gates) {
 }
 
 TEST(OffsetWeight, LinearBetweenStartAndEnd) {
-  sgtllc::VerificationConfig vc;  // 10 m → 20 m
+  sgtllc::VerificationConfig vc;  // 15 m → 20 m
   EXPECT_EQ(sgtllc::offsetWeight(0.0, vc), 1.0);
-  EXPECT_EQ(sgtllc::offsetWeight(10.0, vc), 1.0);
-  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(12.5, vc), 0.75);
-  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(19.0, vc), 0.1);
+  EXPECT_EQ(sgtllc::offsetWeight(12.0, vc), 1.0);  // a revisit 12 m aside keeps its score
+  EXPECT_EQ(sgtllc::offsetWeight(15.0, vc), 1.0);
+  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(16.25, vc), 0.75);
+  EXPECT_DOUBLE_EQ(sgtllc::offsetWeight(19.0, vc), 0.2);
   EXPECT_EQ(sgtllc::offsetWeight(20.0, vc), 0.0);
   EXPECT_EQ(sgtllc::offsetWeight(300.0, vc), 0.0);
   vc.offset_decay_start = 0.0;
@@ -193,10 +194,10 @@ TEST(OffsetWeight, LinearBetweenStartAndEnd) {
 }
 
 TEST_F(MatchFrames, OffsetDecayScalesTheScoreNotThePose) {
-  // The same nodes moved 15 m and 25 m: every node still matches its copy, the pose is right, and score is
-  // n_in / N times the weight (1 − (15 − 10) / 10 = 0.5; 0 beyond 20 m).
+  // The same nodes moved 17.5 m and 25 m: every node still matches its copy, the pose is right, and score is
+  // n_in / N times the weight (1 − (17.5 − 15) / 5 = 0.5; 0 beyond 20 m).
   const DescribedFrame query = describe(nodes_);
-  for (const double offset : {15.0, 25.0}) {
+  for (const double offset : {17.5, 25.0}) {
     const Eigen::Matrix4d T = makeT(T_.topLeftCorner<3, 3>(), Eigen::Vector3d(offset * 0.6, -offset * 0.8, 0.0));
     std::vector<Node> far = nodes_;
     for (Node& n : far) n.centre = apply(T, n.centre);

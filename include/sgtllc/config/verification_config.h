@@ -89,8 +89,9 @@ struct VerificationConfig {
   /// Offset decay of score (verification.h, offsetWeight): a verified candidate whose estimated offset
   /// ‖t(T_match_query)‖ is at most offset_decay_start keeps its score; beyond, score is scaled down linearly to 0
   /// at offset_decay_end (m). [deviation: two passes along one street 20 m apart share many objects, so
-  /// only their pose tells them from a revisit. BENCHMARKS.md "Offset decay of the loop score"]
-  double offset_decay_start = 10.0;
+  /// only their pose tells them from a revisit; a revisit 10–15 m aside keeps its score. BENCHMARKS.md "Offset
+  /// decay of the loop score"]
+  double offset_decay_start = 15.0;
   /// ... and the offset at which score reaches 0 (m); 0 = no decay, as the paper; else greater than
   /// offset_decay_start.
   double offset_decay_end = 20.0;
