@@ -23,7 +23,8 @@ def scanned_wall(x, y_range, z_range, sensor):
     d = d.reshape(-1, 3)
     d = d[d[:, 0] > 1e-6]
     pts = d * (x / d[:, 0])[:, None]
-    keep = (pts[:, 1] >= y_range[0]) & (pts[:, 1] <= y_range[1]) & (pts[:, 2] >= z_range[0]) & (pts[:, 2] <= z_range[1])
+    keep = ((pts[:, 1] >= y_range[0]) & (pts[:, 1] <= y_range[1]) &
+            (pts[:, 2] >= z_range[0]) & (pts[:, 2] <= z_range[1]))
     pts = pts[keep].astype(np.float32)
     return pts, np.full(len(pts), 50, dtype=np.uint32)
 
