@@ -56,6 +56,12 @@ def pose(along, aside, yaw_deg):
     return T
 
 
+def rays_seen(lo, hi, nearest):
+    """The rays lo..hi a patch covers; a patch between two rays is seen by the nearer one alone."""
+    between = hi < lo
+    return np.where(between, nearest, lo), np.where(between, nearest, hi)
+
+
 def render(points, labels, T, sensor):
     """The scan a sensor of the same kind at pose T (in the scan's frame) would give: points and labels."""
     elev, columns = SENSORS[sensor]
@@ -80,13 +86,10 @@ def render(points, labels, T, sensor):
 
     row_f, row_lo, row_hi = row(el), np.ceil(row(el - half_el)), np.floor(row(el + half_el))
     nearest_row = np.rint(row_f)
-    row_lo = np.where(row_hi < row_lo, nearest_row, row_lo)  # a patch between two beams is seen by the nearer
-    row_hi = np.where(row_hi < row_lo, nearest_row, row_hi)
+    row_lo, row_hi = rays_seen(row_lo, row_hi, nearest_row)
     col_f = (az + math.pi) / col_step
-    col_lo = np.ceil(col_f - half_az / col_step)
-    col_hi = np.floor(col_f + half_az / col_step)
-    col_lo = np.where(col_hi < col_lo, np.rint(col_f), col_lo)
-    col_hi = np.where(col_hi < col_lo, np.rint(col_f), col_hi)
+    col_half = half_az / col_step
+    col_lo, col_hi = rays_seen(np.ceil(col_f - col_half), np.floor(col_f + col_half), np.rint(col_f))
     row_hi = np.minimum(row_hi, row_lo + MAX_SPLAT - 1)
     col_hi = np.minimum(col_hi, col_lo + MAX_SPLAT - 1)
     rays, depth, who = [], [], []
@@ -138,10 +141,13 @@ def main():
     ap.add_argument("--per-scan", action="store_true", help="a line per scan, view and labelling")
     args = ap.parse_args()
     views = [parse_view(ap, v) for v in (args.view or VIEWS)]
-    base = sgtllc.Config.from_yaml(args.config) if args.config else sgtllc.Config()
-    fmt = base.labels.format
-    sources = {"labels": sgtllc.LabelSource.FILE, args.labeller: getattr(sgtllc.LabelSource, args.labeller.upper())}
-    stats = {(v, s): [] for v, _ in views for s in sources}
+    kinds = {"labels": sgtllc.LabelSource.FILE, args.labeller: getattr(sgtllc.LabelSource, args.labeller.upper())}
+    configs = {}  # one configuration per labelling, read once
+    for source, kind in kinds.items():
+        configs[source] = sgtllc.Config.from_yaml(args.config) if args.config else sgtllc.Config()
+        configs[source].labeller.source = kind
+    fmt = configs["labels"].labels.format
+    stats = {(v, s): [] for v, _ in views for s in configs}
     for path in args.scans:
         label_path = sgtllc.default_label_path(path)
         if os.path.exists(label_path):
@@ -149,15 +155,15 @@ def main():
         else:  # no labels: the labeller alone
             points = sgtllc.read_kitti_bin(path)[:, :3].copy()
             labels = np.zeros(len(points), dtype=np.uint32)
+        sources = [s for s in configs if s != "labels" or os.path.exists(label_path)]
+        # The scan's own labelling is the same under every view: made once.
+        match_ids = {s: sgtllc.apply_labeller(points, labels, configs[s]) for s in sources}
         for name, T in views:
             q_points, q_labels = render(points, labels, T, args.sensor)
-            for source, kind in sources.items():
-                if kind == sgtllc.LabelSource.FILE and not os.path.exists(label_path):
-                    continue
-                config = sgtllc.Config.from_yaml(args.config) if args.config else sgtllc.Config()
-                config.labeller.source = kind
+            for source in sources:
+                config = configs[source]
                 pair = sgtllc.compare_pair(q_points, sgtllc.apply_labeller(q_points, q_labels, config), points,
-                                           sgtllc.apply_labeller(points, labels, config), config)
+                                           match_ids[source], config)
                 (ca, ka), (cb, kb) = pair.query_nodes, pair.match_nodes
                 rep = sgtllc.node_repeatability(ca, ka, cb, kb, T)
                 svd = sgtllc.pose_error(pair.refinement.T_match_query_seed if pair.refinement else pair.T_match_query,
@@ -175,7 +181,7 @@ def main():
     print("view | labels | loops | within 0.3 m / 2° (final) | within 1 m / 5° | median inliers | nodes repeated"
           " | by class")
     for name, _ in views:
-        for source in sources:
+        for source in configs:
             rows = stats[(name, source)]
             if not rows:
                 continue
