@@ -8,7 +8,10 @@ from a pose moved by (along, aside) metres and turned by a yaw, at the same heig
 own beam spacing gives it at its range (so a surface that comes nearer is not left full of holes) and the nearest
 patch wins each ray of the new sensor, with its label. A winner stays where it was measured on the ray nearest its
 own direction and is moved onto the other rays it wins at its range. Points nearer than 2.5 m to the new sensor
-(the car) are dropped.
+(the car) are dropped. The new sensor's beams keep the kind's pattern (64 or 32 beams, their relative spacing) over
+the elevations the scan itself shows (its 0.1 % and 99.9 % quantiles): KITTI's HDL-64E sees up to +3.7° to +4.7°
+where its datasheet says +2°, and a sensor cut off at +2° would lose the tops of trunks and poles near it; nuScenes'
+HDL-32E shows its datasheet's span. `--beams datasheet` renders with the datasheet's beams.
 
 It is easier than a real revisit — only surfaces the first scan saw are there, and a trunk's far side is never
 seen — and harder than a scan yawed in place (scripts/yaw-stability.py): distances, beam spacing and occlusion
@@ -17,8 +20,8 @@ against the scan (match), with the scan's labels and with the labeller under tes
 loop, its inliers, the error of its node pose (SVD, before fine registration) and of its final pose, and the share
 of nodes repeated within 0.5 m (BENCHMARKS.md, "Real scans seen from another place").
 
-    scripts/view-shift.py [--view NAME:ALONG:ASIDE:YAW ...] [--sensor hdl64|hdl32] [--config C.yaml]
-                          [--labeller geometric|hybrid] SCAN.bin ...
+    scripts/view-shift.py [--view NAME:ALONG:ASIDE:YAW ...] [--sensor hdl64|hdl32] [--beams scan|datasheet]
+                          [--config C.yaml] [--labeller geometric|hybrid] SCAN.bin ...
 
 Labels are read from the scan's label file (SemanticKITTI layout; one byte a point with a config that says so);
 a scan without one is measured with the labeller alone.
@@ -62,9 +65,28 @@ def rays_seen(lo, hi, nearest):
     return np.where(between, nearest, lo), np.where(between, nearest, hi)
 
 
-def render(points, labels, T, sensor):
-    """The scan a sensor of the same kind at pose T (in the scan's frame) would give: points and labels."""
+def elevation_span(points):
+    """The lowest and highest beam elevation (degrees) a scan shows: the 0.1 % and 99.9 % quantiles of its points'
+    elevations beyond MIN_RANGE (a few stray returns set neither)."""
+    r = np.linalg.norm(points, axis=1)
+    far = r > MIN_RANGE
+    low, high = np.percentile(np.degrees(np.arcsin(points[far, 2] / r[far])), [0.1, 99.9])
+    return float(low), float(high)
+
+
+def beams(sensor, span=None):
+    """The sensor's beam elevations (degrees): its datasheet's, or the same pattern stretched onto span (low, high)."""
     elev, columns = SENSORS[sensor]
+    if span is not None:
+        low, high = span
+        elev = low + (elev - elev.min()) * (high - low) / (elev.max() - elev.min())
+    return elev, columns
+
+
+def render(points, labels, T, sensor, span=None):
+    """The scan a sensor of the same kind at pose T (in the scan's frame) would give: points and labels. With span
+    (degrees, low and high), its beams cover that span instead of the datasheet's."""
+    elev, columns = beams(sensor, span)
     order = np.argsort(elev)  # np.interp needs ascending abscissae
     elev_up = np.radians(elev[order])
     beam_step = np.radians(np.median(np.abs(np.diff(elev))))
@@ -138,6 +160,8 @@ def main():
     ap.add_argument("--config", help="YAML configuration (labels, labeller, detector)")
     ap.add_argument("--labeller", choices=["geometric", "hybrid"], default="geometric",
                     help="the label-free (or label-completing) source to compare with the scan's own labels")
+    ap.add_argument("--beams", choices=["scan", "datasheet"], default="scan",
+                    help="the beams span the elevations the scan itself shows (default) or the sensor's datasheet")
     ap.add_argument("--per-scan", action="store_true", help="a line per scan, view and labelling")
     args = ap.parse_args()
     views = [parse_view(ap, v) for v in (args.view or VIEWS)]
@@ -158,8 +182,9 @@ def main():
         sources = [s for s in configs if s != "labels" or os.path.exists(label_path)]
         # The scan's own labelling is the same under every view: made once.
         match_ids = {s: sgtllc.apply_labeller(points, labels, configs[s]) for s in sources}
+        span = elevation_span(points) if args.beams == "scan" else None
         for name, T in views:
-            q_points, q_labels = render(points, labels, T, args.sensor)
+            q_points, q_labels = render(points, labels, T, args.sensor, span)
             for source in sources:
                 config = configs[source]
                 pair = sgtllc.compare_pair(q_points, sgtllc.apply_labeller(q_points, q_labels, config), points,
