@@ -12,6 +12,7 @@
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/pcd.h"
 #include "sgtllc/io/ply_read.h"
+#include "sgtllc/io/scan_pairs.h"
 #include "sgtllc/io/sequence.h"
 #include "sgtllc/io/trajectory.h"
 
@@ -132,6 +133,17 @@ void bindIo(py::module_& m) {
         "Reads a label file as an (N,) uint32 array: SemanticKITTI uint32 words (semantic id = low 16 bits,\n"
         "instance = high 16) or one byte a point (nuScenes-lidarseg). With point_count, format AUTO tells the two\n"
         "apart by size and any other size raises; without it, AUTO and UINT32 read uint32 words.");
+  m.def(
+      "read_scan_pairs",
+      [](const std::string& path) {
+        std::vector<std::pair<std::string, std::string>> out;
+        for (const io::ScanPair& p : io::readScanPairs(path)) out.emplace_back(p.query, p.match);
+        return out;
+      },
+      py::arg("path"),
+      "The pairs of a list file as `sgtllc pair --list` reads it: one pair a line, QUERY,MATCH as CSV (a path\n"
+      "holding a comma quoted), `#` comments, an optional `query,match` header; relative paths are taken from the\n"
+      "list's folder. Raises naming the file and line for a record of other than two paths, or a list with none.");
   m.def("default_label_path", &io::defaultLabelPath, py::arg("bin_path"),
         "The label file of a scan: DIR/../labels/NAME.label if it exists, else DIR/NAME.label.");
   m.def("read_labeled_scan",

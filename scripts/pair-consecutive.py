@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Pairs of real keyframes of KITTI-layout scenes through `sgtllc pair --json`: how many pairs are loops, and how
+"""Pairs of real keyframes of KITTI-layout scenes through `sgtllc pair --list --json`: how many pairs are loops, and how
 many of those have a pose within 1 m / 5 deg and within 0.3 m / 2 deg of the scenes' own poses (LiDAR poses,
 poses.txt). The nuScenes figures of BENCHMARKS.md ("Node repeatability on real scans", "Consistency path") come
 from it.
@@ -16,6 +16,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -64,22 +65,23 @@ def main(argv):
     if len(args) < 2:
         sys.exit(__doc__)
     sgtllc, scenes = args[0], args[1:]
-    geometric = "geometric" in extra or any(
-        a.endswith(".yaml") and "source: geometric" in open(a).read() for a in extra)
 
-    def run(job):
-        qs, qi, ms, mi, _ = job
-        labels = [] if geometric else ["--labels-query", frame(qs, "labels", qi),
-                                       "--labels-match", frame(ms, "labels", mi)]
-        out = subprocess.run([sgtllc, "pair", frame(qs, "velodyne", qi), frame(ms, "velodyne", mi), "--json"]
-                             + labels + extra, capture_output=True, text=True)
+    def run(chunk):
+        """One `sgtllc pair --list` process over a chunk of the jobs: one JSON object a line, in the list's order."""
+        with tempfile.TemporaryDirectory() as tmp:
+            lst = os.path.join(tmp, "pairs.csv")
+            with open(lst, "w") as f:
+                for qs, qi, ms, mi, _ in chunk:
+                    f.write(f"{os.path.abspath(frame(qs, 'velodyne', qi))},{os.path.abspath(frame(ms, 'velodyne', mi))}\n")
+            out = subprocess.run([sgtllc, "pair", "--list", lst, "--json"] + extra, capture_output=True, text=True)
         if out.returncode != 0:
             sys.exit(out.stderr)
-        return json.loads(out.stdout)
+        return [json.loads(line) for line in out.stdout.splitlines()]
 
     jobs = pairs_of(scenes, mode, gap)
+    half = (len(jobs) + 1) // 2  # two processes, one a core
     with ThreadPoolExecutor(2) as pool:
-        results = list(pool.map(run, jobs))
+        results = [r for chunk in pool.map(run, [c for c in (jobs[:half], jobs[half:]) if c]) for r in chunk]
     loops = within_1m = within_03m = by_consistency = 0
     for job, r in zip(jobs, results):
         if not r["loop"]:

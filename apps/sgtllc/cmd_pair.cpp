@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "pair_compare.h"
 #include "sgtllc/io/nodes.h"
 #include "sgtllc/io/output_file.h"
 #include "sgtllc/io/pcd.h"
@@ -22,6 +23,7 @@ struct PairOptions {
   std::string config;
   std::string labeller;  ///< --labeller file|geometric
   std::string export_dir;
+  std::string list;  ///< --list: pairs from a file instead of QUERY MATCH
   bool json = false;
   bool force = false;
 };
@@ -84,12 +86,6 @@ void exportGraphs(const std::string& dir, const ExportPaths& p, const PairResult
                                 inlier[k] ? std::array<uint8_t, 3>{0, 200, 0} : std::array<uint8_t, 3>{220, 0, 0}});
   }
   io::writeGraphPly(qm, both, edges, num_classes, overwrite);
-}
-
-/// Pairs of MatchResult::associations that guided matching added (algorithm §7.2), not LA.
-size_t numGuided(const MatchResult& m) {
-  return static_cast<size_t>(std::count_if(m.associations.begin(), m.associations.end(),
-                                           [](const NodeMatch& a) { return a.guided; }));
 }
 
 std::string inputSummary(const FrameNodes& f) {
@@ -158,114 +154,28 @@ void printText(const PairOptions& o, const PairResult& r, const FrameNodes& q, c
             << ", refinement " << fixed(t.refinement_ms, 2) << "\n";
 }
 
-/// The footprint check (algorithm §7.7), or null where it did not run (node files, the check off, no pose).
-Json footprintJson(const FootprintOverlap& f, const VerificationConfig& config) {
-  if (f.compared == 0) return nullptr;
-  return {{"share", f.share},
-          {"compared_cells", f.compared},
-          {"min_share", config.min_footprint_overlap},
-          {"seen_through", f.seen.share()},
-          {"sight_judged", f.seen.judged}};
-}
-
-Json footprintSearchJson(const FootprintShift& s) {
-  if (s.compared == 0) return nullptr;
-  return {{"shift_m", {s.shift.x(), s.shift.y()}},
-          {"share", s.share},
-          {"unshifted_share", s.unshifted_share},
-          {"compared_cells", s.compared}};
-}
-
-void printJson(const PairOptions& o, const PairResult& r, const Config& config, double load_ms) {
-  const MatchResult& m = r.match;
-  const size_t guided = numGuided(m);
-  Json matches = Json::array();
-  std::vector<bool> inlier(m.associations.size(), false);
-  for (int k : m.inliers) inlier[k] = true;
-  for (size_t k = 0; k < m.associations.size(); ++k) {
-    const NodeMatch& a = m.associations[k];
-    matches.push_back({{"query_node", a.query},
-                       {"match_node", a.match},
-                       {"class", config.labels.className(r.query_nodes[a.query].label)},
-                       {"similarity", a.similarity},
-                       {"inlier", static_cast<bool>(inlier[k])},
-                       {"guided", a.guided}});
-  }
-  Json refinement = nullptr;
-  if (const auto& f = r.refinement) {
-    Json information = Json::array();
-    for (int i = 0; i < 6; ++i) {
-      Json row = Json::array();
-      for (int j = 0; j < 6; ++j) row.push_back(f->information(i, j));
-      information.push_back(row);
-    }
-    refinement = {{"status", refinementStatusName(f->status)},
-                  {"used", f->used()},
-                  {"fitness", f->fitness},
-                  {"rmse_m", f->rmse_m},
-                  {"iterations", f->iterations},
-                  {"query_points", f->query_points},
-                  {"match_points", f->match_points},
-                  {"T_match_query_svd", matrixJson(f->T_match_query_seed)},
-                  {"information", information}};
-  }
-  const Json out = {{"query", o.query},
-                              {"match", o.match},
-                              {"loop", r.is_loop},
-                              {"score", m.score},
-                              {"score_t", m.score},
-                              {"score_c", m.score_c},
-                              {"rejection", rejectionName(m.rejection)},
-                              {"offset_weight", offsetWeight(m.T_match_query.topRightCorner<3, 1>().norm(),
-                                                             config.verification)},
-                              {"nodes_query", r.query_nodes.size()},
-                              {"nodes_match", r.match_nodes.size()},
-                              {"associations", m.associations.size() - guided},
-                              {"guided_pairs", guided},
-                              {"inliers", m.inliers.size()},
-                              {"path", m.by_consistency ? "consistency" : "descriptors"},
-                              {"footprint_search", footprintSearchJson(m.footprint_search)},
-                              {"footprint", footprintJson(m.footprint, config.verification)},
-                              {"matches", matches},
-                              {"T_match_query", matrixJson(m.T_match_query)},
-                              {"refinement", refinement},
-                              {"timing_ms", timingJson(r.timing, load_ms)}};
-  std::cout << jsonText(out) << "\n";
-}
-
 void runPair(const PairOptions& o) {
+  if (!o.list.empty()) {
+    if (!o.query.empty() || !o.match.empty() || !o.labels_query.empty() || !o.labels_match.empty() ||
+        !o.export_dir.empty()) {
+      throw CLI::ValidationError("pair --list", "takes the pairs from the list: no QUERY, MATCH, --labels-query, "
+                                 "--labels-match or --export with it");
+    }
+    runPairList(o.list, o.label_field, loadConfigOption(o.config, 0, o.labeller), o.json);
+    return;
+  }
+  if (o.query.empty() || o.match.empty()) {
+    throw CLI::ValidationError("pair", "give QUERY and MATCH, or --list FILE");
+  }
   const Config config = loadConfigOption(o.config, 0, o.labeller);
   const ExportPaths paths = o.export_dir.empty() ? ExportPaths{} : checkExport(o.export_dir, o.force);
-  FrameNodes q = loadFrameNodes(o.query, o.labels_query, o.label_field, config);
-  FrameNodes mt = loadFrameNodes(o.match, o.labels_match, o.label_field, config);
-  for (const auto& [name, f] : {std::pair<const std::string&, const FrameNodes&>{o.query, q}, {o.match, mt}}) {
-    warnAboutInput(name, f.stats, static_cast<int>(f.nodes.size()), f.from_node_file ? "node rows" : "points");
-  }
-  const LabelMap labels(effectiveLabelConfig(config));
-  // Node files carry no points: no footprint check, and the SVD pose stands.
-  const bool scans = !q.from_node_file && !mt.from_node_file;
-  PairResult r = comparePair(q.nodes, mt.nodes, config, scans ? std::move(q.footprint) : Footprint{},
-                             scans ? std::move(mt.footprint) : Footprint{});
-  r.extraction_query = q.stats;
-  r.extraction_match = mt.stats;
-  r.timing.extraction_ms = q.extraction_ms + mt.extraction_ms;
-  const auto refine_start = std::chrono::steady_clock::now();
-  if (scans) {
-    // Each scan is given up to its registration points, one after the other: the peak holds one big scan.
-    std::vector<Eigen::Vector3f> query_points = queryPoints(std::move(q.cloud), labels, config.registration);
-    refinePair(&r, query_points, matchPoints(std::move(mt.cloud), labels, config.registration), config);
-  }
-  if (r.refinement) {
-    r.timing.refinement_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - refine_start).count();
-  }
-  const double load_ms = q.load_ms + mt.load_ms;
+  ComparedPair c = compareFiles({o.query, o.match, o.labels_query, o.labels_match, o.label_field}, config);
   if (o.json) {
-    printJson(o, r, config, load_ms);
+    std::cout << jsonText(pairJson(o.query, o.match, c.result, config, c.load_ms)) << "\n";
   } else {
-    printText(o, r, q, mt, config, load_ms);
+    printText(o, c.result, c.query, c.match, config, c.load_ms);
   }
-  if (!o.export_dir.empty()) exportGraphs(o.export_dir, paths, r, config, o.force);
+  if (!o.export_dir.empty()) exportGraphs(o.export_dir, paths, c.result, config, o.force);
 }
 
 }  // namespace
@@ -273,9 +183,11 @@ void runPair(const PairOptions& o) {
 void addPairCommand(CLI::App& app) {
   auto o = std::make_shared<PairOptions>();
   CLI::App* cmd = app.add_subcommand("pair", "Compare two scans: loop or not, scores and the 6-DoF pose");
-  cmd->add_option("QUERY", o->query, "query scan (.bin with labels, .pcd or .ply with a label field) or node file (.txt)")
-      ->required();
-  cmd->add_option("MATCH", o->match, "candidate scan it may revisit")->required();
+  cmd->add_option("QUERY", o->query, "query scan (.bin with labels, .pcd or .ply with a label field) or node file (.txt)");
+  cmd->add_option("MATCH", o->match, "candidate scan it may revisit");
+  cmd->add_option("--list", o->list,
+                  "compare every pair of this file instead, in one process: one pair a line, QUERY,MATCH (CSV; "
+                  "paths from the list's folder); prints a CSV row per pair, or with --json one JSON object a line");
   cmd->add_option("--labels-query", o->labels_query,
                   "labels of QUERY, a uint32 or one byte a point (labels.format) (default: ../labels/NAME.label "
                   "beside velodyne/NAME.bin, else NAME.label)");

@@ -104,3 +104,14 @@ def test_malformed_files_name_file_and_problem(tmp_path):
     bad_nodes.write_text("1 2 3\n")
     with pytest.raises(sgtllc.Error, match=r"n\.txt:1"):
         sgtllc.read_nodes(str(bad_nodes))
+
+
+def test_scan_pair_lists_read_as_the_cli_reads_them(tmp_path):
+    lists = tmp_path / "lists"
+    lists.mkdir()
+    (lists / "pairs.txt").write_text('query,match\n# the demo pair\na.bin,../b.bin\n/abs/c.bin,"d,e.bin"\n')
+    assert sgtllc.read_scan_pairs(str(lists / "pairs.txt")) == [
+        (str(lists / "a.bin"), str(lists / "../b.bin")), ("/abs/c.bin", str(lists / "d,e.bin"))]
+    (lists / "bad.txt").write_text("/only.bin\n")
+    with pytest.raises(ValueError, match=r"bad.txt:1: 1 fields, expected two"):
+        sgtllc.read_scan_pairs(str(lists / "bad.txt"))

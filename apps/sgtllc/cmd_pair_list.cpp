@@ -1,0 +1,86 @@
+// `sgtllc pair --list LIST`: many pairs in one process (pair_compare.h). A script that calls `sgtllc pair` once a
+// pair pays the process start and the first touch of a scan's memory every time (BENCHMARKS.md, "Whole process").
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "pair_compare.h"
+#include "sgtllc/io/csv.h"
+#include "sgtllc/io/quote.h"
+#include "sgtllc/io/scan_pairs.h"
+
+namespace sgtllc::cli {
+namespace {
+
+/// Nine decimals: the pose's translation to the nanometre, its rotation's entries to 1e-9.
+std::string number(double v) { return fixed(v, 9); }
+
+std::string csvHeader() {
+  std::string h = "query,match,loop,score,score_c,inliers,nodes_query,nodes_match,path,rejection,refinement";
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) h += ",T" + std::to_string(r) + std::to_string(c);
+  }
+  return h + ",error";
+}
+
+/// A row of csvHeader(): the pair's decision, scores and T_match_query (3 × 4, row-major), or its error.
+std::string csvRow(const io::ScanPair& pair, const PairResult* r, const std::string& error) {
+  std::string row;
+  io::appendCsvField(row, pair.query);
+  row += ',';
+  io::appendCsvField(row, pair.match);
+  if (r) {
+    const MatchResult& m = r->match;
+    row += std::string(",") + (r->is_loop ? "1" : "0") + "," + number(m.score) + "," + number(m.score_c) + "," +
+           std::to_string(m.inliers.size()) + "," + std::to_string(r->query_nodes.size()) + "," +
+           std::to_string(r->match_nodes.size()) + "," + (m.by_consistency ? "consistency" : "descriptors") + "," +
+           rejectionName(m.rejection) + "," + (r->refinement ? refinementStatusName(r->refinement->status) : "none");
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 4; ++j) row += "," + number(m.T_match_query(i, j));
+    }
+    row += ",";
+  } else {
+    row += std::string(22, ',');  // the 9 result columns and the 12 of the pose left empty
+    io::appendCsvField(row, error);
+  }
+  return row;
+}
+
+}  // namespace
+
+void runPairList(const std::string& list, const std::string& label_field, const Config& config, bool json) {
+  const std::vector<io::ScanPair> pairs = io::readScanPairs(list);
+  if (!json) std::cout << csvHeader() << "\n";
+  size_t failed = 0;
+  for (const io::ScanPair& pair : pairs) {
+    std::string error;
+    try {
+      const ComparedPair c = compareFiles({pair.query, pair.match, "", "", label_field}, config);
+      if (json) {
+        std::cout << pairJson(pair.query, pair.match, c.result, config, c.load_ms)
+                         .dump(-1, ' ', false, Json::error_handler_t::replace)
+                  << "\n";
+      } else {
+        std::cout << csvRow(pair, &c.result, "") << "\n";
+      }
+      continue;
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    ++failed;
+    std::cerr << "sgtllc: error: " << list << ":" << pair.line << ": " << io::escapeControls(error) << "\n";
+    if (json) {
+      const Json out = {{"query", pair.query}, {"match", pair.match}, {"error", error}};
+      std::cout << out.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+    } else {
+      std::cout << csvRow(pair, nullptr, error) << "\n";
+    }
+  }
+  std::cout.flush();
+  if (failed > 0) {
+    throw Error(list + ": " + std::to_string(failed) + " of " + std::to_string(pairs.size()) +
+                " pairs could not be compared (their errors are above and in their rows)");
+  }
+}
+
+}  // namespace sgtllc::cli
