@@ -12,12 +12,12 @@ from it.
 
   e.g. scripts/pair-consecutive.py build/apps/sgtllc/sgtllc nuscenes/0001 nuscenes/0005 -- --config configs/nuscenes.yaml
 """
+import csv
 import json
 import os
 import subprocess
 import sys
 import tempfile
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -66,22 +66,19 @@ def main(argv):
         sys.exit(__doc__)
     sgtllc, scenes = args[0], args[1:]
 
-    def run(chunk):
-        """One `sgtllc pair --list` process over a chunk of the jobs: one JSON object a line, in the list's order."""
-        with tempfile.TemporaryDirectory() as tmp:
-            lst = os.path.join(tmp, "pairs.csv")
-            with open(lst, "w") as f:
-                for qs, qi, ms, mi, _ in chunk:
-                    f.write(f"{os.path.abspath(frame(qs, 'velodyne', qi))},{os.path.abspath(frame(ms, 'velodyne', mi))}\n")
-            out = subprocess.run([sgtllc, "pair", "--list", lst, "--json"] + extra, capture_output=True, text=True)
-        if out.returncode != 0:
-            sys.exit(out.stderr)
-        return [json.loads(line) for line in out.stdout.splitlines()]
-
     jobs = pairs_of(scenes, mode, gap)
-    half = (len(jobs) + 1) // 2  # two processes, one a core
-    with ThreadPoolExecutor(2) as pool:
-        results = [r for chunk in pool.map(run, [c for c in (jobs[:half], jobs[half:]) if c]) for r in chunk]
+    with tempfile.TemporaryDirectory() as tmp:
+        lst = os.path.join(tmp, "pairs.csv")
+        with open(lst, "w", newline="") as f:
+            rows = csv.writer(f, lineterminator="\n")  # quotes a path that holds a comma or a quote
+            for qs, qi, ms, mi, _ in jobs:
+                rows.writerow([os.path.abspath(frame(qs, "velodyne", qi)), os.path.abspath(frame(ms, "velodyne", mi))])
+        # One process, two pairs at once: one JSON object a line, in the list's order.
+        out = subprocess.run([sgtllc, "pair", "--list", lst, "--json", "--threads", "2"] + extra, capture_output=True,
+                             text=True)
+    if out.returncode != 0:
+        sys.exit(out.stderr)
+    results = [json.loads(line) for line in out.stdout.splitlines()]
     loops = within_1m = within_03m = by_consistency = 0
     for job, r in zip(jobs, results):
         if not r["loop"]:

@@ -109,6 +109,25 @@ TEST_F(CliPairList, APairThatCannotBeComparedIsReportedAndTheOthersGoOn) {
   EXPECT_THAT(with_stderr.out, HasSubstr("1 of 2 pairs could not be compared"));
 }
 
+TEST_F(CliPairList, TheRowsDoNotDependOnTheThreads) {
+  const std::string list = writeList(scan("004501") + "," + scan("000052") + "\nmissing.bin," + scan("000052") +
+                                     "\n" + scan("000850") + "," + scan("000088") + "\n" + scan("000052") + "," +
+                                     scan("004501") + "\n");
+  const test::CliRun one = run("pair --list " + list + " --threads 1", false);
+  EXPECT_EQ(one.status, 1);
+  ASSERT_EQ(csvRecords(one.out).size(), 5u);
+  for (const char* threads : {"2", "3"}) {
+    const test::CliRun more = run("pair --list " + list + " --threads " + threads, false);
+    EXPECT_EQ(more.status, 1);
+    EXPECT_EQ(more.out, one.out) << threads << " threads";
+  }
+  const test::CliRun json = run("pair --list " + list + " --json --threads 3", false);
+  const std::vector<std::string> objects = lines(json.out);
+  ASSERT_EQ(objects.size(), 4u);
+  EXPECT_EQ(nlohmann::json::parse(objects[1])["query"], path("missing.bin"));
+  EXPECT_TRUE(nlohmann::json::parse(objects[3])["loop"].get<bool>());
+}
+
 TEST_F(CliPairList, AListTakesNoPairOfItsOwn) {
   const std::string list = writeList(scan("004501") + "," + scan("000052") + "\n");
   const test::CliRun both = run("pair --list " + list + " " + scan("004501"));

@@ -24,6 +24,7 @@ struct PairOptions {
   std::string labeller;  ///< --labeller file|geometric
   std::string export_dir;
   std::string list;  ///< --list: pairs from a file instead of QUERY MATCH
+  int threads = 0;   ///< --threads: pairs at once with --list, else the verification's threads (0: the config's)
   bool json = false;
   bool force = false;
 };
@@ -161,13 +162,13 @@ void runPair(const PairOptions& o) {
       throw CLI::ValidationError("pair --list", "takes the pairs from the list: no QUERY, MATCH, --labels-query, "
                                  "--labels-match or --export with it");
     }
-    runPairList(o.list, o.label_field, loadConfigOption(o.config, 0, o.labeller), o.json);
+    runPairList(o.list, o.label_field, loadConfigOption(o.config, 0, o.labeller), o.json, o.threads);
     return;
   }
   if (o.query.empty() || o.match.empty()) {
     throw CLI::ValidationError("pair", "give QUERY and MATCH, or --list FILE");
   }
-  const Config config = loadConfigOption(o.config, 0, o.labeller);
+  const Config config = loadConfigOption(o.config, o.threads, o.labeller);
   const ExportPaths paths = o.export_dir.empty() ? ExportPaths{} : checkExport(o.export_dir, o.force);
   ComparedPair c = compareFiles({o.query, o.match, o.labels_query, o.labels_match, o.label_field}, config);
   if (o.json) {
@@ -188,6 +189,10 @@ void addPairCommand(CLI::App& app) {
   cmd->add_option("--list", o->list,
                   "compare every pair of this file instead, in one process: one pair a line, QUERY,MATCH (CSV; "
                   "paths from the list's folder); prints a CSV row per pair, or with --json one JSON object a line");
+  cmd->add_option("--threads", o->threads,
+                  "with --list, pairs compared at once, each on one thread (the output does not depend on it); "
+                  "alone, the node extraction's threads (config `threads`)")
+      ->check(CLI::Range(1, kMaxThreads));
   cmd->add_option("--labels-query", o->labels_query,
                   "labels of QUERY, a uint32 or one byte a point (labels.format) (default: ../labels/NAME.label "
                   "beside velodyne/NAME.bin, else NAME.label)");

@@ -1,6 +1,8 @@
 // `sgtllc pair --list LIST`: many pairs in one process (pair_compare.h). A script that calls `sgtllc pair` once a
 // pair pays the process start and the first touch of a scan's memory every time (BENCHMARKS.md, "Whole process").
+#include <algorithm>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -8,6 +10,7 @@
 #include "sgtllc/io/csv.h"
 #include "sgtllc/io/quote.h"
 #include "sgtllc/io/scan_pairs.h"
+#include "sgtllc/parallel.h"
 
 namespace sgtllc::cli {
 namespace {
@@ -48,35 +51,51 @@ std::string csvRow(const io::ScanPair& pair, const PairResult* r, const std::str
 
 }  // namespace
 
-void runPairList(const std::string& list, const std::string& label_field, const Config& config, bool json) {
+void runPairList(const std::string& list, const std::string& label_field, const Config& given, bool json,
+                 int threads) {
   const std::vector<io::ScanPair> pairs = io::readScanPairs(list);
+  Config config = given;
+  if (threads > 1) config.threads = 1;  // the pairs share the cores, not each pair's stages
   if (!json) std::cout << csvHeader() << "\n";
+  const auto filesOf = [&](const io::ScanPair& pair) { return PairFiles{pair.query, pair.match, "", "", label_field}; };
+  // A batch of `threads` pairs at once; its warnings and rows are printed afterwards, in the list's order.
+  const size_t batch = static_cast<size_t>(std::max(1, threads));
   size_t failed = 0;
-  for (const io::ScanPair& pair : pairs) {
-    std::string error;
-    try {
-      const ComparedPair c = compareFiles({pair.query, pair.match, "", "", label_field}, config);
-      if (json) {
-        std::cout << pairJson(pair.query, pair.match, c.result, config, c.load_ms)
-                         .dump(-1, ' ', false, Json::error_handler_t::replace)
-                  << "\n";
-      } else {
-        std::cout << csvRow(pair, &c.result, "") << "\n";
+  for (size_t first = 0; first < pairs.size(); first += batch) {
+    const int n = static_cast<int>(std::min(batch, pairs.size() - first));
+    std::vector<std::optional<ComparedPair>> compared(static_cast<size_t>(n));
+    std::vector<std::string> errors(static_cast<size_t>(n));
+    parallelFor(n, n, [&](int k) {
+      try {
+        compared[k] = compareFiles(filesOf(pairs[first + k]), config, false);
+      } catch (const std::exception& e) {
+        errors[k] = e.what();
       }
-      continue;
-    } catch (const std::exception& e) {
-      error = e.what();
+    });
+    for (int k = 0; k < n; ++k) {
+      const io::ScanPair& pair = pairs[first + k];
+      if (const std::optional<ComparedPair>& c = compared[k]) {
+        warnInputs(filesOf(pair), *c);
+        if (json) {
+          std::cout << pairJson(pair.query, pair.match, c->result, config, c->load_ms)
+                           .dump(-1, ' ', false, Json::error_handler_t::replace)
+                    << "\n";
+        } else {
+          std::cout << csvRow(pair, &c->result, "") << "\n";
+        }
+        continue;
+      }
+      ++failed;
+      std::cerr << "sgtllc: error: " << list << ":" << pair.line << ": " << io::escapeControls(errors[k]) << "\n";
+      if (json) {
+        const Json out = {{"query", pair.query}, {"match", pair.match}, {"error", errors[k]}};
+        std::cout << out.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+      } else {
+        std::cout << csvRow(pair, nullptr, errors[k]) << "\n";
+      }
     }
-    ++failed;
-    std::cerr << "sgtllc: error: " << list << ":" << pair.line << ": " << io::escapeControls(error) << "\n";
-    if (json) {
-      const Json out = {{"query", pair.query}, {"match", pair.match}, {"error", error}};
-      std::cout << out.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
-    } else {
-      std::cout << csvRow(pair, nullptr, error) << "\n";
-    }
+    std::cout.flush();
   }
-  std::cout.flush();
   if (failed > 0) {
     throw Error(list + ": " + std::to_string(failed) + " of " + std::to_string(pairs.size()) +
                 " pairs could not be compared (their errors are above and in their rows)");

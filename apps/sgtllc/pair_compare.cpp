@@ -14,15 +14,20 @@ size_t numGuided(const MatchResult& m) {
                                            [](const NodeMatch& a) { return a.guided; }));
 }
 
-ComparedPair compareFiles(const PairFiles& files, const Config& config) {
+void warnInputs(const PairFiles& files, const ComparedPair& c) {
+  for (const auto& [name, f] :
+       {std::pair<const std::string&, const FrameNodes&>{files.query, c.query}, {files.match, c.match}}) {
+    warnAboutInput(name, f.stats, static_cast<int>(f.nodes.size()), f.from_node_file ? "node rows" : "points");
+  }
+}
+
+ComparedPair compareFiles(const PairFiles& files, const Config& config, bool warn) {
   ComparedPair c;
   c.query = loadFrameNodes(files.query, files.labels_query, files.label_field, config);
   c.match = loadFrameNodes(files.match, files.labels_match, files.label_field, config);
   FrameNodes& q = c.query;
   FrameNodes& mt = c.match;
-  for (const auto& [name, f] : {std::pair<const std::string&, const FrameNodes&>{files.query, q}, {files.match, mt}}) {
-    warnAboutInput(name, f.stats, static_cast<int>(f.nodes.size()), f.from_node_file ? "node rows" : "points");
-  }
+  if (warn) warnInputs(files, c);
   const LabelMap labels(effectiveLabelConfig(config));
   // Node files carry no points: no footprint check, and the SVD pose stands.
   const bool scans = !q.from_node_file && !mt.from_node_file;

@@ -23,9 +23,13 @@ struct ComparedPair {
   double load_ms = 0.0;
 };
 
-/// Reads both inputs, warns about dropped points on stderr, verifies the pair (the footprint check where both are
-/// scans) and refines its pose by ICP when both are scans and registration.pair is on.
-ComparedPair compareFiles(const PairFiles& files, const Config& config);
+/// Reads both inputs, warns about dropped points on stderr (unless @p warn is false: warnInputs() later), verifies
+/// the pair (the footprint check where both are scans) and refines its pose by ICP when both are scans and
+/// registration.pair is on.
+ComparedPair compareFiles(const PairFiles& files, const Config& config, bool warn = true);
+
+/// The warnings compareFiles() prints about a compared pair's inputs (warnAboutInput).
+void warnInputs(const PairFiles& files, const ComparedPair& c);
 
 /// Pairs of MatchResult::associations that guided matching added (algorithm §7.2), not LA.
 size_t numGuided(const MatchResult& m);
@@ -34,10 +38,12 @@ size_t numGuided(const MatchResult& m);
 Json pairJson(const std::string& query, const std::string& match, const PairResult& r, const Config& config,
               double load_ms);
 
-/// `sgtllc pair --list LIST`: every pair of the list (io::readScanPairs) compared in turn in this process, a CSV
-/// row per pair on stdout (a header first), or with @p json one JSON object a line (pairJson). A pair that cannot
-/// be compared (a missing or bad file) gets its error in its row and on stderr, the others go on, and the command
-/// then fails naming how many did not compare.
-void runPairList(const std::string& list, const std::string& label_field, const Config& config, bool json);
+/// `sgtllc pair --list LIST`: every pair of the list (io::readScanPairs) compared in this process, @p threads pairs
+/// at once, a CSV row per pair on stdout in the list's order (a header first), or with @p json one JSON object a
+/// line (pairJson); stdout and stderr do not depend on @p threads but for the times. A pair that cannot be
+/// compared (a missing or bad file) gets its error in its row and on stderr, the others go on, and the command then
+/// fails naming how many did not compare.
+void runPairList(const std::string& list, const std::string& label_field, const Config& config, bool json,
+                 int threads);
 
 }  // namespace sgtllc::cli
