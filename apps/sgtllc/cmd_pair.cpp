@@ -24,7 +24,7 @@ struct PairOptions {
   std::string labeller;  ///< --labeller file|geometric
   std::string export_dir;
   std::string list;  ///< --list: pairs from a file instead of QUERY MATCH
-  int threads = 0;   ///< --threads: pairs at once with --list, else the verification's threads (0: the config's)
+  int threads = 0;   ///< --threads: pairs at once with --list, else the node extraction's (0: the config's)
   bool json = false;
   bool force = false;
 };

@@ -91,7 +91,7 @@ void runPairList(const std::string& list, const std::string& label_field, const 
         const Json out = {{"query", pair.query}, {"match", pair.match}, {"error", errors[k]}};
         std::cout << out.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
       } else {
-        std::cout << csvRow(pair, nullptr, errors[k]) << "\n";
+        std::cout << csvRow(pair, nullptr, io::escapeControls(errors[k])) << "\n";
       }
     }
     std::cout.flush();
