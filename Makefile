@@ -96,8 +96,10 @@ test-sanitize:
 	  CMAKE_FLAGS="$(CLANG_FLAGS) -DSGTLLC_SANITIZE=address,undefined $(CMAKE_FLAGS)"
 	@scripts/sanitize/check.sh asan build-asan
 
-# TSan over the threaded paths: the suites that run parallelFor at 2 threads, and run/eval/simulate --threads 2.
-TSAN_TESTS = test_parallel test_class_split test_node_extraction test_detector test_eval_protocol test_sim_output test_sim_cli test_cli
+# TSan over the threaded paths: the suites that run parallelFor at 2 threads (pair --list --threads 2 and 3 among
+# them), and run/eval/simulate --threads 2.
+TSAN_TESTS = test_parallel test_class_split test_node_extraction test_detector test_eval_protocol test_sim_output test_sim_cli test_cli \
+  test_cli_pair_list
 test-tsan:
 	@$(MAKE) --no-print-directory build BUILD=build-tsan DEPS_FLAGS=--dev TARGETS="sgtllc_cli $(TSAN_TESTS)" \
 	  CMAKE_FLAGS="$(CLANG_FLAGS) -DSGTLLC_SANITIZE=thread $(CMAKE_FLAGS)"
