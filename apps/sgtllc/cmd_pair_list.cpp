@@ -26,6 +26,9 @@ std::string csvHeader() {
   return h + ",error";
 }
 
+/// One JSON object on one line; bytes that are not UTF-8 (from file names) are replaced, as jsonText does.
+std::string jsonLine(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
 /// A row of csvHeader(): the pair's decision, scores and T_match_query (3 × 4, row-major), or its error.
 std::string csvRow(const io::ScanPair& pair, const PairResult* r, const std::string& error) {
   std::string row;
@@ -77,9 +80,7 @@ void runPairList(const std::string& list, const std::string& label_field, const 
       if (const std::optional<ComparedPair>& c = compared[k]) {
         warnInputs(filesOf(pair), *c);
         if (json) {
-          std::cout << pairJson(pair.query, pair.match, c->result, config, c->load_ms)
-                           .dump(-1, ' ', false, Json::error_handler_t::replace)
-                    << "\n";
+          std::cout << jsonLine(pairJson(pair.query, pair.match, c->result, config, c->load_ms)) << "\n";
         } else {
           std::cout << csvRow(pair, &c->result, "") << "\n";
         }
@@ -88,8 +89,7 @@ void runPairList(const std::string& list, const std::string& label_field, const 
       ++failed;
       std::cerr << "sgtllc: error: " << list << ":" << pair.line << ": " << io::escapeControls(errors[k]) << "\n";
       if (json) {
-        const Json out = {{"query", pair.query}, {"match", pair.match}, {"error", errors[k]}};
-        std::cout << out.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+        std::cout << jsonLine({{"query", pair.query}, {"match", pair.match}, {"error", errors[k]}}) << "\n";
       } else {
         std::cout << csvRow(pair, nullptr, io::escapeControls(errors[k])) << "\n";
       }
