@@ -103,10 +103,10 @@ FrameResult LoopDetector::process(std::vector<Node> nodes) { return process(std:
 FrameResult LoopDetector::process(std::vector<Node> nodes, RegistrationClouds clouds, Footprint footprint) {
   FrameResult result = processNodes(std::move(nodes), std::move(footprint), FrameResult{});
   // Only the declared loop is refined (docs/registration.md, "Where it runs"), against the stored cloud of its frame.
-  if (result.is_loop && clouds_.enabled() && !clouds.query.empty()) {
+  if (result.is_loop && clouds_.enabled() && !clouds.stable.empty()) {
     const auto start = Clock::now();
     Candidate& loop = result.candidates[static_cast<size_t>(result.best)];
-    loop.refinement = clouds_.refine(clouds.query, loop.frame, loop.match.T_match_query);
+    loop.refinement = clouds_.refine(clouds_.queryCloud(clouds.stable), loop.frame, loop.match.T_match_query);
     if (loop.refinement && loop.refinement->used()) loop.match.T_match_query = loop.refinement->T_match_query;
     result.timing.refinement_ms = msSince(start);
   }

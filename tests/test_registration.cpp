@@ -209,6 +209,28 @@ TEST(RegistrationGeometry, ACoarseSubsampleThatPairsNothingFallsBackToTheWholeQu
   EXPECT_NEAR(r.fitness, 0.75, 1e-9);  // the far quarter pairs with nothing
 }
 
+TEST_F(Registration, TheStoreMakesTheQueryCloudFromTheStablePointsAsTheScanWould) {
+  // Online, a frame keeps its stable points and makes the query cloud only if it closes a loop: the clouds must be
+  // those of the scan itself, point for point and in order.
+  Config config;
+  config.registration.online = true;
+  const LabelMap labels{LabelConfig{}};
+  const CloudStore store(config.registration, LabelConfig{});
+  for (const LabeledCloud* scan : {s52, s4501}) {
+    const RegistrationClouds clouds = store.prepare(*scan);
+    const std::vector<Eigen::Vector3f> query = compactCloud(queryPoints(*scan, labels, config.registration)).expand();
+    ASSERT_EQ(query.size(), 8000u);  // capped
+    EXPECT_EQ(store.queryCloud(clouds.stable), query);
+    EXPECT_EQ(clouds.match.points, compactCloud(matchPoints(*scan, labels, config.registration)).points);
+    EXPECT_EQ(clouds.stable, stableRegistrationPoints(*scan, labels, config.registration.ground_ids));
+    EXPECT_GT(clouds.stable.size(), scan->points.size() / 2);
+  }
+  config.registration.online = false;
+  const RegistrationClouds off = CloudStore(config.registration, LabelConfig{}).prepare(*s52);
+  EXPECT_TRUE(off.stable.empty());
+  EXPECT_TRUE(off.match.points.empty());
+}
+
 TEST(RegistrationCloud, CompactCloudKeepsCentimetresInSixBytesAPoint) {
   const std::vector<Eigen::Vector3f> points = {{1.234f, -5.678f, 0.004f}, {327.6f, -327.6f, 0.0f}, {400.0f, 0, 0}};
   const CompactCloud c = compactCloud(points);

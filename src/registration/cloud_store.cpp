@@ -9,7 +9,14 @@ CloudStore::CloudStore(const RegistrationConfig& config, const LabelConfig& labe
 
 RegistrationClouds CloudStore::prepare(const LabeledCloud& cloud) const {
   if (!enabled()) return {};
-  return {compactCloud(matchPoints(cloud, labels_, config_)), compactCloud(queryPoints(cloud, labels_, config_)).expand()};
+  RegistrationClouds out;
+  out.stable = stableRegistrationPoints(cloud, labels_, config_.ground_ids);
+  out.match = compactCloud(reduceRegistrationPoints(out.stable, config_.match_voxel, config_.match_max_points));
+  return out;
+}
+
+std::vector<Eigen::Vector3f> CloudStore::queryCloud(const std::vector<Eigen::Vector3f>& stable) const {
+  return compactCloud(reduceRegistrationPoints(stable, config_.voxel, config_.max_points)).expand();
 }
 
 void CloudStore::add(CompactCloud cloud) {

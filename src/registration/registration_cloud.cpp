@@ -29,8 +29,22 @@ bool isStable(const Eigen::Vector3f& p, uint32_t id, const std::vector<uint8_t>&
   return use[id & 0xFFFFu] && p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxCoordinate;
 }
 
-std::vector<Eigen::Vector3f> downsampleAndCap(const std::vector<Eigen::Vector3f>& stable, double voxel,
-                                              int max_points) {
+}  // namespace
+
+std::vector<Eigen::Vector3f> stableRegistrationPoints(const LabeledCloud& cloud, const LabelMap& labels,
+                                                      const std::vector<uint32_t>& ground_ids) {
+  checkSizes(cloud);
+  const std::vector<uint8_t> use = stableIds(labels, ground_ids);
+  std::vector<Eigen::Vector3f> stable;
+  stable.reserve(cloud.points.size());
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    if (isStable(cloud.points[i], cloud.labels[i], use)) stable.push_back(cloud.points[i]);
+  }
+  return stable;
+}
+
+std::vector<Eigen::Vector3f> reduceRegistrationPoints(const std::vector<Eigen::Vector3f>& stable, double voxel,
+                                                      int max_points) {
   std::vector<Eigen::Vector3f> voxels = voxelDownsample(stable, voxel).centroids;
   const size_t cap = static_cast<size_t>(max_points);
   if (voxels.size() <= cap) return voxels;
@@ -41,19 +55,10 @@ std::vector<Eigen::Vector3f> downsampleAndCap(const std::vector<Eigen::Vector3f>
   return kept;
 }
 
-}  // namespace
-
 std::vector<Eigen::Vector3f> registrationPoints(const LabeledCloud& cloud, const LabelMap& labels,
                                                 const std::vector<uint32_t>& ground_ids, double voxel,
                                                 int max_points) {
-  checkSizes(cloud);
-  const std::vector<uint8_t> use = stableIds(labels, ground_ids);
-  std::vector<Eigen::Vector3f> stable;
-  stable.reserve(cloud.points.size());
-  for (size_t i = 0; i < cloud.points.size(); ++i) {
-    if (isStable(cloud.points[i], cloud.labels[i], use)) stable.push_back(cloud.points[i]);
-  }
-  return downsampleAndCap(stable, voxel, max_points);
+  return reduceRegistrationPoints(stableRegistrationPoints(cloud, labels, ground_ids), voxel, max_points);
 }
 
 std::vector<Eigen::Vector3f> registrationPoints(LabeledCloud&& cloud, const LabelMap& labels,
@@ -71,7 +76,7 @@ std::vector<Eigen::Vector3f> registrationPoints(LabeledCloud&& cloud, const Labe
   points.resize(kept);
   std::vector<uint32_t>().swap(cloud.labels);
   const LabeledCloud consumed = std::move(cloud);  // the caller's cloud is left empty, its memory freed on return
-  return downsampleAndCap(consumed.points, voxel, max_points);
+  return reduceRegistrationPoints(consumed.points, voxel, max_points);
 }
 
 std::vector<Eigen::Vector3f> CompactCloud::expand() const {

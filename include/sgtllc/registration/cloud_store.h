@@ -16,11 +16,13 @@
 
 namespace sgtllc {
 
-/// A frame's clouds for the online refinement: the one stored (match role) and the one moved if the frame closes
-/// a loop (query role). Both empty when the store is disabled or the frame came as nodes.
+/// A frame's clouds for the online refinement: the one stored (match role), and the points the moved one (query
+/// role) is made from if the frame closes a loop: most frames do not, and the query cloud's fine voxels were the
+/// largest part of a frame's registration cost (BENCHMARKS.md, "Fine registration"). Both empty when the store is
+/// disabled or the frame came as nodes.
 struct RegistrationClouds {
-  CompactCloud match;                      ///< matchPoints, quantised: what the store keeps
-  std::vector<Eigen::Vector3f> query;      ///< queryPoints, quantised like the stored ones
+  CompactCloud match;                  ///< matchPoints, quantised: what the store keeps
+  std::vector<Eigen::Vector3f> stable;  ///< stableRegistrationPoints of the scan, for CloudStore::queryCloud
 };
 
 /// One CompactCloud per frame, in frame order: at most 6 · RegistrationConfig::max_points bytes each. Empty (and
@@ -32,9 +34,11 @@ class CloudStore {
   bool enabled() const { return config_.online; }
   /// Both clouds of @p cloud; empty when the store is disabled. A pure function of the scan (safe in parallel).
   RegistrationClouds prepare(const LabeledCloud& cloud) const;
+  /// The query cloud (queryPoints, quantised like the stored ones) of a frame's RegistrationClouds::stable.
+  std::vector<Eigen::Vector3f> queryCloud(const std::vector<Eigen::Vector3f>& stable) const;
   /// Appends the next frame's cloud (empty for a frame given as nodes: its loops keep the SVD pose).
   void add(CompactCloud cloud);
-  /// Refines @p T_seed of the query points (queryCloud) against stored frame @p match; nullopt if the store is
+  /// Refines @p T_seed of @p query_points (queryCloud) against stored frame @p match; nullopt if the store is
   /// disabled or the frame unknown. A frame is stored after its loop is decided, so the query is passed in.
   std::optional<Refinement> refine(const std::vector<Eigen::Vector3f>& query_points, int match,
                                    const Eigen::Matrix4d& T_seed) const;

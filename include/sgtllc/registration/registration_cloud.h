@@ -18,6 +18,16 @@
 
 namespace sgtllc {
 
+/// The points of @p cloud registration can use, in scan order: a stable class (LabelMap::classOf ≥ 0) or one of
+/// @p ground_ids (RegistrationConfig::ground_ids), finite, within ±kMaxCoordinate. Throws sgtllc::Error if points
+/// and labels differ in length.
+std::vector<Eigen::Vector3f> stableRegistrationPoints(const LabeledCloud& cloud, const LabelMap& labels,
+                                                      const std::vector<uint32_t>& ground_ids);
+/// @p stable (stableRegistrationPoints) reduced to one centroid per voxel of edge @p voxel (m) in order of first
+/// appearance, then at most @p max_points of them by an even stride over the voxels.
+std::vector<Eigen::Vector3f> reduceRegistrationPoints(const std::vector<Eigen::Vector3f>& stable, double voxel,
+                                                      int max_points);
+
 /// The points of @p cloud registration uses: a stable class (LabelMap::classOf ≥ 0) or one of @p ground_ids
 /// (RegistrationConfig::ground_ids), finite, within ±kMaxCoordinate; one centroid per voxel of edge @p voxel (m) in
 /// order of first appearance, then at most @p max_points of them by an even stride. Throws sgtllc::Error if points
