@@ -32,7 +32,8 @@ class CloudStore {
   CloudStore(const RegistrationConfig& config, const LabelConfig& labels);
 
   bool enabled() const { return config_.online; }
-  /// Both clouds of @p cloud; empty when the store is disabled. A pure function of the scan (safe in parallel).
+  /// The stored cloud and the stable points of @p cloud; empty when the store is disabled. A pure function of the
+  /// scan (safe in parallel).
   RegistrationClouds prepare(const LabeledCloud& cloud) const;
   /// The query cloud (queryPoints, quantised like the stored ones) of a frame's RegistrationClouds::stable.
   std::vector<Eigen::Vector3f> queryCloud(const std::vector<Eigen::Vector3f>& stable) const;
