@@ -109,6 +109,7 @@ class VerificationConfig:
     use_ransac: bool
     ransac_confidence: float
     score_formula: ScoreFormula
+    score_covisible: bool
     max_tilt_deg: float
     guided_matching: bool
     consistency_pairs: int

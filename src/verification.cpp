@@ -120,6 +120,29 @@ int countedNodes(const DescribedFrame& frame, const ClusterConfig& cluster) {
   return n;
 }
 
+Eigen::Matrix4d invertRigid(const Eigen::Matrix4d& T) {
+  Eigen::Matrix4d inv = Eigen::Matrix4d::Identity();
+  inv.topLeftCorner<3, 3>() = T.topLeftCorner<3, 3>().transpose();
+  inv.topRightCorner<3, 1>() = -inv.topLeftCorner<3, 3>() * T.topRightCorner<3, 1>();
+  return inv;
+}
+
+/// The nodes of @p frame that count unmatched and that, moved by @p T_other_frame, lie within @p other's reach:
+/// its farthest node's horizontal range plus @p margin.
+int covisibleNodes(const DescribedFrame& frame, const DescribedFrame& other, const Eigen::Matrix4d& T_other_frame,
+                   double margin, const ClusterConfig& cluster) {
+  double reach = 0.0;
+  for (const Node& node : other.graph.nodes) reach = std::max(reach, node.centre.head<2>().norm());
+  reach += margin;
+  const Eigen::Matrix3d R = T_other_frame.topLeftCorner<3, 3>();
+  const Eigen::Vector3d t = T_other_frame.topRightCorner<3, 1>();
+  int n = 0;
+  for (const Node& node : frame.graph.nodes) {
+    if (countsUnmatched(node.label, cluster) && (R * node.centre + t).head<2>().norm() <= reach) ++n;
+  }
+  return n;
+}
+
 /// The pairs of @p pairs (all of them, or those @p indices picks) whose class counts only when matched.
 int matchedOnly(const DescribedFrame& query, const std::vector<NodeMatch>& pairs, const std::vector<int>* indices,
                 const ClusterConfig& cluster) {
@@ -153,7 +176,12 @@ void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, con
       break;
     case ScoreFormula::kOverlap: {
       // The larger graph's node count, a class that counts only matched adding its inliers (equal on both sides).
-      const int larger = std::max(countedNodes(query, config.cluster), countedNodes(match, config.cluster));
+      const Eigen::Matrix4d& T = result->T_match_query;
+      const int larger =
+          vc.score_covisible
+              ? std::max(covisibleNodes(query, match, T, vc.inlier_threshold, config.cluster),
+                         covisibleNodes(match, query, invertRigid(T), vc.inlier_threshold, config.cluster))
+              : std::max(countedNodes(query, config.cluster), countedNodes(match, config.cluster));
       result->score = n_in / std::max(1, larger + matchedOnly(query, result->associations, &result->inliers,
                                                               config.cluster));
       break;

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <string>
 #include <vector>
@@ -17,6 +18,17 @@ namespace {
 const std::string kData = SGTLLC_DATA_DIR;
 const std::string kScene = kData + "/nuscenes/0001/";
 const std::string kConfig = kData + "/../configs/nuscenes.yaml";
+
+/// configs/nuscenes.yaml written to @p path with @p setting joined to its verification section.
+void writeConfigWith(const std::string& path, const std::string& setting) {
+  std::ifstream config(kConfig);
+  std::string text((std::istreambuf_iterator<char>(config)), std::istreambuf_iterator<char>());
+  const std::string section = "\nverification:\n";
+  const size_t at = text.find(section);
+  ASSERT_NE(at, std::string::npos) << kConfig;
+  text.insert(at + section.size(), "  " + setting + "\n");
+  std::ofstream(path) << text;
+}
 
 /// Nodes printed on the `query` or `match` line of `sgtllc pair`, or −1.
 int nodesOn(const std::string& out, const std::string& which, const std::string& points) {
@@ -84,10 +96,7 @@ TEST(CliNuScenes, LabelFreePairVerifies) {
   expectTheScenesPose(r.out);
 
   const std::string without = testing::TempDir() + "/nuscenes_without_consistency.yaml";
-  {
-    std::ifstream config(kConfig);
-    std::ofstream(without) << config.rdbuf() << "verification:\n  consistency_pairs: 0\n";
-  }
+  writeConfigWith(without, "consistency_pairs: 0");
   const CliRun paper = run(pair + " --config " + without);
   ASSERT_EQ(paper.status, 0) << paper.out;
   EXPECT_NE(paper.out.find("associations 5, inliers 0   (rejected: ransac_failed)"), std::string::npos) << paper.out;
@@ -135,10 +144,7 @@ TEST(CliNuScenes, TheFootprintSearchFindsTheMetresTheNodesMissedAlongAStreet) {
   EXPECT_NEAR(pose[2], -0.24, 2.0) << r.out;
 
   const std::string off = testing::TempDir() + "/nuscenes_without_footprint_search.yaml";
-  {
-    std::ifstream config(kConfig);
-    std::ofstream(off) << config.rdbuf() << "verification:\n  footprint_search: 0\n";
-  }
+  writeConfigWith(off, "footprint_search: 0");
   const CliRun before = run(pair + off);
   ASSERT_EQ(before.status, 0) << before.out;
   EXPECT_NE(before.out.find("loop: YES"), std::string::npos) << before.out;  // the same decision ...

@@ -88,6 +88,39 @@ TEST_F(MatchFrames, ScoreFormulas) {
   EXPECT_GT(paper.score, overlap.score);
 }
 
+TEST_F(MatchFrames, TheCovisibleScoreLeavesOutTheNodesBeyondTheOtherFramesReach) {
+  // The query lacks the scan's farthest nodes, those beyond its own farthest node plus inlier_threshold: the
+  // match has them, but the query could not have seen them, so the covisible score counts the query's nodes only.
+  sgtllc::Config cfg;
+  cfg.verification.score_covisible = true;
+  const double threshold = cfg.verification.inlier_threshold;
+  std::vector<Node> by_range = nodes_;
+  const auto range = [](const Node& n) { return n.centre.head<2>().norm(); };
+  std::stable_sort(by_range.begin(), by_range.end(),
+                   [&](const Node& a, const Node& b) { return range(a) > range(b); });
+  size_t cut = 3;
+  while (cut < by_range.size() && range(by_range[cut - 1]) <= range(by_range[cut]) + threshold) ++cut;
+  ASSERT_LT(cut, by_range.size() / 2) << "no gap in the scan's node ranges";
+  const std::vector<Node> near(by_range.begin() + static_cast<long>(cut), by_range.end());
+  std::vector<Node> moved_all;
+  for (const Node& n : by_range) {
+    Node m = n;
+    m.centre = T_.topLeftCorner<3, 3>() * n.centre + T_.topRightCorner<3, 1>();
+    moved_all.push_back(m);
+  }
+  const DescribedFrame query = describe(near), match = describe(moved_all);
+  ASSERT_EQ(query.numNodes() + static_cast<int>(cut), match.numNodes());
+  const auto covisible = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(covisible.rejection, sgtllc::Rejection::kNone);
+  const double n_in = static_cast<double>(covisible.inliers.size());
+  EXPECT_GE(n_in, 0.9 * query.numNodes());
+  EXPECT_DOUBLE_EQ(covisible.score, n_in / query.numNodes());
+  cfg.verification.score_covisible = false;
+  const auto all = sgtllc::matchFrames(query, match, cfg);
+  ASSERT_EQ(all.inliers.size(), covisible.inliers.size());
+  EXPECT_DOUBLE_EQ(all.score, n_in / match.numNodes());
+}
+
 TEST_F(MatchFrames, AClassThatCountsOnlyMatchedLeavesTheNodeCountsButNotThePose) {
   // The scan's most common class counts only where matched (algorithm §7.3, "Node count"); the query lacks two
   // of its nodes, so the match has unmatched ones.

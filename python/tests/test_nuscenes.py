@@ -75,3 +75,24 @@ def test_footprint_search_moves_a_pose_short_along_the_street():
     before = sgtllc.compare_pair(*scan(2), *scan(0), config)
     assert before.is_loop and before.match.footprint_search.compared == 0
     assert np.linalg.norm(before.T_match_query[:2, 3] - reference[:2, 3]) > 8.0
+
+
+def test_covisible_score_counts_only_what_the_other_scan_could_see():
+    # The same pair: the match scan has 11 nodes, the query 9; under the nodes' pose two of the match's lie beyond
+    # the query's farthest node, so counting the covisible nodes (configs/nuscenes.yaml; docs/algorithm.md §7.3)
+    # divides the 4 inliers by 9 instead of 11.
+    scene = SOURCE / "data" / "nuscenes" / "0006"
+    config = sgtllc.Config.from_yaml(str(SOURCE / "configs" / "nuscenes.yaml"))
+    config.labeller.source = sgtllc.LabelSource.FILE
+    assert config.verification.score_covisible and not sgtllc.Config().verification.score_covisible
+
+    def scan(i):
+        return sgtllc.read_labeled_scan(str(scene / "velodyne" / f"{i:06d}.bin"))
+
+    covisible = sgtllc.compare_pair(*scan(2), *scan(0), config)
+    config.verification.score_covisible = False
+    every = sgtllc.compare_pair(*scan(2), *scan(0), config)
+    assert [len(covisible.query_nodes[1]), len(covisible.match_nodes[1])] == [9, 11]
+    assert len(covisible.match.inliers) == len(every.match.inliers) == 4
+    assert covisible.match.score == pytest.approx(4 / 9)
+    assert every.match.score == pytest.approx(4 / 11)

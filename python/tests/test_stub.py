@@ -64,5 +64,5 @@ def test_settings_lines_are_those_of_the_settings_table():
     spec.loader.exec_module(update_stub)
     text = STUB.read_text()
     assert update_stub.regenerate(text, sgtllc) == text, "run: PYTHONPATH=build/python scripts/update-stub.py"
-    assert len(update_stub.settings_of(sgtllc, "VerificationConfig")) == 29
+    assert len(update_stub.settings_of(sgtllc, "VerificationConfig")) == 30
     assert ("ground_ids", "Tuple[int, ...]") in update_stub.settings_of(sgtllc, "RegistrationConfig")

@@ -23,6 +23,8 @@ void addVerificationSettings(std::vector<Setting>* out) {
   v.choice("score_formula", &V::score_formula,
            {{"paper", ScoreFormula::kPaper}, {"legacy", ScoreFormula::kLegacy}, {"overlap", ScoreFormula::kOverlap}},
            "score: n_in/|LA|, (n_in - 1)/|LA| or n_in/max(M, N)");
+  v.flag("score_covisible", &V::score_covisible,
+         "score_formula overlap: count only the nodes within the other frame's reach under the pose");
   v.number("max_tilt_deg", &V::max_tilt_deg, "[1, 180]", "deg",
            "RANSAC skips a rotation that tilts the up axis more than this; 180 = no check");
   v.flag("guided_matching", &V::guided_matching,

@@ -47,6 +47,12 @@ struct VerificationConfig {
   /// σ_4: a loop iff the best score > σ_4; 0.1 for MulRan and MCD (algorithm §7.4, §8) (every score
   /// formula, and score_c, lies in [0, 1]).
   double sigma_4 = 0.3;
+  /// Score over the nodes each frame could have seen of the other (score_formula overlap): a node counts only if,
+  /// under the pose, it lies within the other frame's reach (its farthest node, horizontally, plus
+  /// inlier_threshold). Two scans taken apart share less of their surroundings than two taken at one place.
+  /// Off by default: it gains on a sparse sensor's real scans (configs/nuscenes.yaml sets it), not on 64-beam ones.
+  /// [beyond the paper: algorithm §7.3 "Covisible nodes"; BENCHMARKS.md "Covisible nodes"]
+  bool score_covisible = false;
   /// Largest tilt (°) between the up axes of a loop's two scans: RANSAC skips a hypothesis whose rotation turns z
   /// by more (algorithm §7.2); 180 = no check. A sensor pitched by α on the vehicle turns z by up to 2α
   /// between passes driven opposite ways, so a mount pitched more than ~10° wants 180 (or its scans turned into a
