@@ -78,9 +78,9 @@ def test_footprint_search_moves_a_pose_short_along_the_street():
 
 
 def test_covisible_score_counts_only_what_the_other_scan_could_see():
-    # The same pair: the match scan has 11 nodes, the query 9; under the nodes' pose two of the match's lie beyond
-    # the query's farthest node, so counting the covisible nodes (configs/nuscenes.yaml; docs/algorithm.md §7.3)
-    # divides the 4 inliers by 9 instead of 11.
+    # The same pair: the match scan has 11 nodes, the query 9. Counting only the nodes the pose puts within the other
+    # scan's reach (configs/nuscenes.yaml; docs/algorithm.md §7.3) leaves out match nodes beyond the query's
+    # farthest one, and the 4 inliers are divided by 9 instead of 11.
     scene = SOURCE / "data" / "nuscenes" / "0006"
     config = sgtllc.Config.from_yaml(str(SOURCE / "configs" / "nuscenes.yaml"))
     config.labeller.source = sgtllc.LabelSource.FILE
