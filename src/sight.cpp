@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "internal/rigid_inverse.h"
 #include "sgtllc/diamond_angle.h"
 
 namespace sgtllc {
@@ -115,10 +116,7 @@ SeenThrough seenThrough(const Sight& query, const Sight& match, const Eigen::Mat
     if (sight->low.size() != kSightSectors || sight->high.size() != kSightSectors) return out;
   }
   compare(query, match, T_match_query, &out);
-  Eigen::Matrix4d inverse = Eigen::Matrix4d::Identity();
-  inverse.topLeftCorner<3, 3>() = T_match_query.topLeftCorner<3, 3>().transpose();
-  inverse.topRightCorner<3, 1>() = -inverse.topLeftCorner<3, 3>() * T_match_query.topRightCorner<3, 1>();
-  compare(match, query, inverse, &out);
+  compare(match, query, internal::rigidInverse(T_match_query), &out);
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "internal/rigid_inverse.h"
 #include "sgtllc/consistent_matching.h"
 #include "sgtllc/guided_matching.h"
 #include "sgtllc/ransac.h"
@@ -120,13 +121,6 @@ int countedNodes(const DescribedFrame& frame, const ClusterConfig& cluster) {
   return n;
 }
 
-Eigen::Matrix4d invertRigid(const Eigen::Matrix4d& T) {
-  Eigen::Matrix4d inv = Eigen::Matrix4d::Identity();
-  inv.topLeftCorner<3, 3>() = T.topLeftCorner<3, 3>().transpose();
-  inv.topRightCorner<3, 1>() = -inv.topLeftCorner<3, 3>() * T.topRightCorner<3, 1>();
-  return inv;
-}
-
 /// The nodes of @p frame that count unmatched and that, moved by @p T_other_frame, lie within @p other's reach:
 /// its farthest node's horizontal range plus @p margin.
 int covisibleNodes(const DescribedFrame& frame, const DescribedFrame& other, const Eigen::Matrix4d& T_other_frame,
@@ -180,7 +174,7 @@ void scoreVerified(const DescribedFrame& query, const DescribedFrame& match, con
       const int larger =
           vc.score_covisible
               ? std::max(covisibleNodes(query, match, T, vc.inlier_threshold, config.cluster),
-                         covisibleNodes(match, query, invertRigid(T), vc.inlier_threshold, config.cluster))
+                         covisibleNodes(match, query, internal::rigidInverse(T), vc.inlier_threshold, config.cluster))
               : std::max(countedNodes(query, config.cluster), countedNodes(match, config.cluster));
       result->score = n_in / std::max(1, larger + matchedOnly(query, result->associations, &result->inliers,
                                                               config.cluster));
